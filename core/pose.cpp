@@ -1,0 +1,44 @@
+#include "core/pose.h"
+
+#include <cmath>
+#include <numbers>
+
+namespace dashbed::core {
+
+Eigen::Matrix3d rotationFromRpy(const Eigen::Vector3d& rpy) {
+  return (Eigen::AngleAxisd(rpy.z(), Eigen::Vector3d::UnitZ()) *
+          Eigen::AngleAxisd(rpy.y(), Eigen::Vector3d::UnitY()) *
+          Eigen::AngleAxisd(rpy.x(), Eigen::Vector3d::UnitX()))
+      .toRotationMatrix();
+}
+
+Eigen::Vector3d rpyFromRotation(const Eigen::Matrix3d& R) {
+  const double pitch = std::atan2(-R(2, 0), std::hypot(R(0, 0), R(1, 0)));
+  // near the pitch singularity roll and yaw are coupled; put everything in yaw
+  if (std::abs(std::cos(pitch)) < 1e-12) {
+    const double yaw = std::atan2(-R(0, 1), R(1, 1));
+    return {0.0, pitch, yaw};
+  }
+  return {std::atan2(R(2, 1), R(2, 2)), pitch, std::atan2(R(1, 0), R(0, 0))};
+}
+
+Pose makePose(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy) {
+  Pose X = Pose::Identity();
+  X.linear() = rotationFromRpy(rpy);
+  X.translation() = xyz;
+  return X;
+}
+
+Pose makePoseXyzYaw(const Eigen::Vector3d& xyz, double yaw) {
+  return makePose(xyz, Eigen::Vector3d(0.0, 0.0, yaw));
+}
+
+double wrapToPi(double angle) {
+  constexpr double kTwoPi = 2.0 * std::numbers::pi;
+  double a = std::fmod(angle, kTwoPi);
+  if (a <= -std::numbers::pi) a += kTwoPi;
+  if (a > std::numbers::pi) a -= kTwoPi;
+  return a;
+}
+
+}  // namespace dashbed::core

@@ -1,0 +1,181 @@
+#pragma once
+// The world: robots, fixtures, stable surfaces, goal regions, objects, goals and settings.
+//
+// A World is an immutable description loaded from a world file (worlds/*.yaml, format in the
+// README) or made by a scenario generator. Frames: W is the world frame (z up, SI units).
+// Every element remembers where it was written (SourceLocation) so that checks made after
+// loading (reachability, planner infeasibility) can still name the file and line.
+
+#include <array>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/pose.h"
+
+namespace dashbed::core {
+
+/// Where an element was written: file, 1-based line and column (0 when generated in memory).
+struct SourceLocation {
+  std::string file;
+  int line = 0;
+  int column = 0;
+};
+
+/// Linear RGB colour, components in [0, 1].
+struct Color {
+  double r = 0.5;
+  double g = 0.5;
+  double b = 0.5;
+  bool operator==(const Color&) const = default;
+};
+
+/// An oriented box: X_WB is the pose of the box's centre, size the full edge lengths [m].
+struct Box {
+  Pose X_WB = Pose::Identity();
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+};
+
+/// A robot placed in the world.
+struct RobotSpec {
+  std::string name;
+  std::string model;                  ///< robot model name; resolves to assets/<model>.urdf
+  Pose X_WBase = Pose::Identity();    ///< pose of the model's root link (base_link) in W
+  std::array<double, 6> home{};       ///< home configuration of the six arm joints [rad]
+  SourceLocation where;
+};
+
+enum class FixtureType {
+  kBox,    ///< a solid box (tables, pedestals, walls)
+  kBin,    ///< an open box: floor and four walls; its inside is a goal region named like it
+  kShelf,  ///< two side panels, a back panel and horizontal boards; each board is a surface
+};
+
+/// A static fixture. `X_WF` is the pose of the centre of the fixture's bottom face
+/// (for kBox the box stands on that face too); only yaw about +z is allowed.
+struct FixtureSpec {
+  std::string name;
+  FixtureType type = FixtureType::kBox;
+  Pose X_WF = Pose::Identity();
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();  ///< outer size [m]
+  Color color;
+  double wall_thickness = 0.01;  ///< bins and shelves: wall / panel / board thickness [m]
+  std::vector<double> levels;    ///< shelves: heights of the boards' top faces above the base [m]
+  std::vector<Box> boxes;        ///< derived: the fixture's solid parts in W (collision geometry)
+  SourceLocation where;
+};
+
+/// A horizontal rectangle objects may rest on. X_WS: centre of the rectangle, z up.
+struct StableSurface {
+  std::string name;
+  Pose X_WS = Pose::Identity();
+  Eigen::Vector2d size = Eigen::Vector2d::Zero();  ///< extent along the surface's x and y [m]
+  std::string fixture;  ///< the fixture it belongs to ("" when written by hand)
+  SourceLocation where;
+};
+
+/// A goal region: an upright box volume. X_WR: centre of the region's floor (on a surface),
+/// z up; an object is inside when its centre is within the box of `size` standing on the floor.
+struct Region {
+  std::string name;
+  Pose X_WR = Pose::Identity();
+  Eigen::Vector3d size = Eigen::Vector3d::Zero();
+  std::string fixture;  ///< the fixture that made it (bins), or ""
+  SourceLocation where;
+};
+
+/// A moveable box-shaped object resting at its start pose.
+struct ObjectSpec {
+  std::string name;
+  Eigen::Vector3d size = Eigen::Vector3d::Constant(0.04);  ///< edge lengths [m]
+  double mass = 0.1;                                      ///< [kg]
+  double friction = 0.8;                                  ///< Coulomb coefficient (combined by product)
+  Color color;
+  std::string object_class;  ///< e.g. "red"; goals may name a class instead of an object
+  Pose X_WO = Pose::Identity();  ///< start pose of the object's centre; yaw only
+  SourceLocation where;
+};
+
+/// A goal: one object (or every object of a class) must end inside a region.
+struct Goal {
+  std::string object;        ///< set for object goals
+  std::string object_class;  ///< set for class goals
+  std::string region;
+  SourceLocation where;
+};
+
+/// Simulation settings (world file section `physics`).
+struct PhysicsSettings {
+  double time_step = 0.001;                          ///< fixed step [s] (1 kHz)
+  Eigen::Vector3d gravity{0.0, 0.0, -9.81};          ///< [m/s^2]
+  int solver_iterations = 100;                       ///< sequential-impulse iterations per step
+  double pad_friction = 1.0;                         ///< finger pad Coulomb coefficient (rubber)
+  double fixture_friction = 0.6;                     ///< table, bins, shelves
+  double settle_time = 0.5;                          ///< time objects settle before the plan starts [s]
+  bool operator==(const PhysicsSettings&) const = default;
+};
+
+/// Controller settings (world file section `controller`).
+struct ControllerSettings {
+  std::array<double, 6> kp{8000.0, 8000.0, 4000.0, 600.0, 600.0, 300.0};  ///< [Nm/rad]
+  std::array<double, 6> kd{400.0, 400.0, 200.0, 30.0, 30.0, 15.0};        ///< [Nm s/rad]
+  double grip_force = 60.0;     ///< Hand-E closing force [N], 20..185
+  double finger_speed = 0.1;    ///< Hand-E finger speed [m/s], 0.02..0.15
+  bool operator==(const ControllerSettings&) const = default;
+};
+
+/// Thresholds of the physical checks (world file section `checks`).
+struct CheckSettings {
+  double slip_tolerance = 0.005;        ///< object displacement in the gripper frame [m]
+  double slip_angle_tolerance = 0.1;    ///< object rotation in the gripper frame [rad]
+  double lift_clearance = 0.005;        ///< min gap to the support after lifting [m]
+  double placement_tolerance = 0.0;     ///< extra margin around a goal region [m]
+  double upright_tolerance = 0.1;       ///< tilt of a placed object [rad]
+  double rest_speed = 0.01;             ///< an object is at rest below this speed [m/s]
+  double settle_time = 0.5;             ///< wait after release before judging a placement [s]
+  double tracking_error_limit = 0.05;   ///< joint tracking error [rad]
+  bool operator==(const CheckSettings&) const = default;
+};
+
+/// The current world-file format version.
+inline constexpr int kWorldFormatVersion = 1;
+
+/// Home configuration of a robot whose world-file entry has no `home` [rad].
+inline constexpr std::array<double, 6> kDefaultRobotHome{0.0, -1.5708, 1.5708,
+                                                         -1.5708, -1.5708, 0.0};
+
+struct World {
+  std::string name;
+  std::string description;
+  std::vector<RobotSpec> robots;
+  std::vector<FixtureSpec> fixtures;
+  std::vector<StableSurface> surfaces;  ///< written ones and those derived from fixtures
+  std::vector<Region> regions;          ///< written ones and those derived from bins
+  std::vector<ObjectSpec> objects;
+  std::vector<Goal> goals;
+  PhysicsSettings physics;
+  ControllerSettings controller;
+  CheckSettings checks;
+  std::string source_file;  ///< file it was loaded from ("" when generated)
+
+  const RobotSpec* findRobot(std::string_view name) const;
+  const ObjectSpec* findObject(std::string_view name) const;
+  const Region* findRegion(std::string_view name) const;
+  const FixtureSpec* findFixture(std::string_view name) const;
+
+  /// The goal region of an object (object goals first, then class goals), or nullptr.
+  const Region* goalRegionOf(const ObjectSpec& object) const;
+};
+
+/// Rebuilds everything derived from the fixtures: each fixture's `boxes`, the surfaces
+/// `<fixture>/top` (box), `<fixture>/floor` (bin), `<fixture>/board<k>` (shelf), and the
+/// region `<fixture>` of each bin. Previously derived entries (those with a non-empty
+/// `fixture` field) are replaced; hand-written ones are kept in front. Fixture frame F:
+/// origin at the centre of the bottom face; shelves open towards -x_F, back panel at +x_F.
+/// parseWorldYaml calls this; scenario generators building a World in memory may too.
+void deriveFixtureGeometry(World& world);
+
+}  // namespace dashbed::core

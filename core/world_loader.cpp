@@ -1,0 +1,18 @@
+#include "core/world_loader.h"
+
+#include "core/world_io.h"
+
+namespace dashbed::core {
+
+LoadedWorld validateWorld(World world) {
+  LoadedWorld loaded;
+  loaded.world = std::make_unique<const World>(std::move(world));
+  loaded.robots = std::make_unique<const RobotSet>(*loaded.world);
+  loaded.reach = computeReach(*loaded.world, *loaded.robots);
+  requireReachable(*loaded.world, loaded.reach);
+  return loaded;
+}
+
+LoadedWorld loadWorld(const std::filesystem::path& file) { return validateWorld(loadWorldFile(file)); }
+
+}  // namespace dashbed::core

@@ -1,0 +1,27 @@
+#pragma once
+// Loading a world completely: parse and validate the file, load the robot models, and check
+// that every object start and goal is within some robot's reach.
+
+#include <filesystem>
+#include <memory>
+
+#include "core/reach.h"
+#include "core/robot_set.h"
+#include "core/world.h"
+
+namespace dashbed::core {
+
+struct LoadedWorld {
+  std::unique_ptr<const World> world;
+  std::unique_ptr<const RobotSet> robots;  ///< points into *world
+  ReachMap reach;
+};
+
+/// Parses `file` (core/world_io.h), loads the robots and checks reachability.
+/// Throws WorldError with file, line and field for any problem.
+LoadedWorld loadWorld(const std::filesystem::path& file);
+
+/// The same for a world already in memory (e.g. from a scenario generator).
+LoadedWorld validateWorld(World world);
+
+}  // namespace dashbed::core

@@ -1,0 +1,28 @@
+#pragma once
+// Shared plumbing of the subcommands: turning exceptions into documented exit codes.
+
+#include <iostream>
+#include <stdexcept>
+
+#include <CLI/CLI.hpp>
+
+#include "core/world_io.h"
+#include "tools/commands.h"
+
+namespace dashbed::tools {
+
+/// Runs `f`; bad input (WorldError, runtime_error from files) prints "dashbed WHAT: message"
+/// and exits with kExitBadInput. CLI11 errors (including RuntimeError exit codes) pass through.
+template <typename F>
+void runGuarded(const char* what, F&& f) {
+  try {
+    f();
+  } catch (const CLI::Error&) {
+    throw;
+  } catch (const std::runtime_error& e) {
+    std::cerr << "dashbed " << what << ": " << e.what() << "\n";
+    throw CLI::RuntimeError(kExitBadInput);
+  }
+}
+
+}  // namespace dashbed::tools

@@ -1,0 +1,124 @@
+// dashbed run [WORLD]: the main job on a world (the built-in default when none is given).
+//
+// This version loads and validates the world and reports what each robot can reach and which
+// robots can hand objects to each other; planning, simulation and checks plug in here.
+
+#include <cmath>
+#include <iomanip>
+#include <iostream>
+#include <numbers>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/asset_paths.h"
+#include "core/reach.h"
+#include "core/world_loader.h"
+#include "tools/cli_support.h"
+
+namespace dashbed::tools {
+namespace {
+
+struct RunOptions {
+  std::string world_file;
+  bool json = false;
+};
+
+std::string robotNames(const core::World& world, const std::vector<int>& robots) {
+  if (robots.empty()) return "-";
+  std::string out;
+  for (const int r : robots) out += (out.empty() ? "" : ",") + world.robots[r].name;
+  return out;
+}
+
+std::string vec3(const Eigen::Vector3d& v) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(3) << "[" << v.x() << ", " << v.y() << ", " << v.z() << "]";
+  return out.str();
+}
+
+double yawDegrees(const core::Pose& X) {
+  return std::atan2(X.linear()(1, 0), X.linear()(0, 0)) * 180.0 / std::numbers::pi;
+}
+
+void runSummary(const RunOptions& options) {
+  const std::filesystem::path file = options.world_file.empty() ? core::defaultWorldPath() : options.world_file;
+  const core::LoadedWorld loaded = core::loadWorld(file);
+  const core::World& world = *loaded.world;
+  const core::RobotSet& robots = *loaded.robots;
+
+  std::vector<std::pair<int, int>> handoff_pairs;
+  for (std::size_t a = 0; a < robots.size(); ++a) {
+    for (std::size_t b = a + 1; b < robots.size(); ++b) {
+      if (core::workspacesOverlap(robots[a], robots[b])) handoff_pairs.emplace_back(a, b);
+    }
+  }
+
+  if (options.json) {
+    nlohmann::json out;
+    out["world"] = {{"name", world.name}, {"file", file.string()}};
+    for (const auto& r : world.robots) {
+      out["robots"].push_back({{"name", r.name}, {"model", r.model}, {"home", r.home}});
+    }
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+      const auto& object = world.objects[o];
+      const core::Region* region = world.goalRegionOf(object);
+      nlohmann::json start = nlohmann::json::array(), goal = nlohmann::json::array();
+      for (int r : loaded.reach.start[o]) start.push_back(world.robots[r].name);
+      for (int r : loaded.reach.goal[o]) goal.push_back(world.robots[r].name);
+      out["objects"].push_back({{"name", object.name},
+                                {"class", object.object_class},
+                                {"goal_region", region != nullptr ? region->name : ""},
+                                {"start_reached_by", start},
+                                {"goal_reached_by", goal}});
+    }
+    out["handoff_pairs"] = nlohmann::json::array();
+    for (const auto& [a, b] : handoff_pairs) out["handoff_pairs"].push_back({world.robots[a].name, world.robots[b].name});
+    std::cout << out.dump(2) << "\n";
+    return;
+  }
+
+  std::cout << "world " << world.name << " (" << file.string() << "): " << world.robots.size() << " robots, "
+            << world.fixtures.size() << " fixtures, " << world.objects.size() << " objects, " << world.goals.size()
+            << " goals\n";
+  if (!world.description.empty()) std::cout << "  " << world.description << "\n";
+  std::cout << "\nrobots:\n";
+  for (const auto& r : world.robots) {
+    std::cout << "  " << std::left << std::setw(6) << r.name << " " << r.model << "  base "
+              << vec3(r.X_WBase.translation()) << " yaw " << std::fixed << std::setprecision(1)
+              << yawDegrees(r.X_WBase) << " deg\n";
+  }
+  std::cout << "\nobjects (start reached by / goal reached by):\n";
+  for (std::size_t o = 0; o < world.objects.size(); ++o) {
+    const auto& object = world.objects[o];
+    const core::Region* region = world.goalRegionOf(object);
+    std::cout << "  " << std::left << std::setw(10) << object.name << " " << std::setw(8) << object.object_class
+              << " at " << vec3(object.X_WO.translation()) << "  -> " << std::setw(14)
+              << (region != nullptr ? region->name : "(no goal)") << " start: " << std::setw(8)
+              << robotNames(world, loaded.reach.start[o]) << " goal: " << robotNames(world, loaded.reach.goal[o])
+              << "\n";
+  }
+  std::cout << "\ngoals:\n";
+  for (const auto& g : world.goals) {
+    std::cout << "  " << (g.object.empty() ? "class " + g.object_class : "object " + g.object) << " -> "
+              << g.region << "\n";
+  }
+  std::cout << "\nhandoffs possible between:";
+  if (handoff_pairs.empty()) std::cout << " (none)";
+  for (const auto& [a, b] : handoff_pairs) std::cout << " " << world.robots[a].name << "<->" << world.robots[b].name;
+  std::cout << "\n\nworld is valid: every object start and goal is within some robot's reach.\n";
+}
+
+}  // namespace
+
+void addRunCommand(CLI::App& app) {
+  auto options = std::make_shared<RunOptions>();
+  CLI::App* run = app.add_subcommand(
+      "run", "The main job on a world: load and validate it and report who reaches what "
+             "(default world: worlds/default.yaml)");
+  run->add_option("world", options->world_file, "world file (YAML)");
+  run->add_flag("--json", options->json, "print JSON");
+  run->callback([options] { runGuarded("run", [&] { runSummary(*options); }); });
+}
+
+}  // namespace dashbed::tools

@@ -1,0 +1,43 @@
+#!/usr/bin/env bash
+# Installs the Debian packages dashbed needs (only the missing ones; silent when all are there)
+# and builds it (Release, ccache when available).
+#
+#   tools/setup.sh              build into build/
+#   tools/setup.sh --sanitize   build into build-asan/ with AddressSanitizer + UBSan
+set -euo pipefail
+
+root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
+build_dir="$root/build"
+cmake_args=(-DCMAKE_BUILD_TYPE=Release)
+if [[ "${1:-}" == "--sanitize" ]]; then
+  build_dir="$root/build-asan"
+  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DDASHBED_SANITIZE=ON)
+fi
+
+packages=(
+  cmake g++ make pkg-config ccache          # toolchain
+  libeigen3-dev                             # linear algebra
+  liburdfdom-dev                            # URDF parsing
+  libassimp-dev                             # mesh loading
+  libyaml-cpp-dev                           # world files
+  nlohmann-json3-dev                        # plans, reports, --json
+  libcli11-dev                              # command line
+  catch2                                    # tests (Catch2 v2)
+)
+missing=()
+for package in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
+done
+if ((${#missing[@]} > 0)); then
+  if [[ $(id -u) -ne 0 ]]; then
+    echo "setup: missing Debian packages: ${missing[*]} (run as root, or: sudo apt-get install ${missing[*]})" >&2
+    exit 1
+  fi
+  echo "setup: installing ${missing[*]}"
+  export DEBIAN_FRONTEND=noninteractive
+  apt-get update -qq
+  apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" >/dev/null
+cmake --build "$build_dir" -j"$(nproc)"
