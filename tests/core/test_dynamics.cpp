@@ -1,0 +1,87 @@
+#include <catch2/catch.hpp>
+
+#include <random>
+
+#include "core/dynamics.h"
+#include "core/kinematics.h"
+#include "core/robot_model.h"
+
+using namespace dashbed::core;
+
+namespace {
+
+const RobotModel& ur5eHande() {
+  static const RobotModel model =
+      RobotModel::fromUrdfFile(std::string(DASHBED_SOURCE_ROOT) + "/assets/ur5e_hande.urdf");
+  return model;
+}
+
+Eigen::VectorXd randomQ(std::mt19937_64& rng) {
+  std::uniform_real_distribution<double> angle(-3.0, 3.0), stroke(0.0, 0.025);
+  Eigen::VectorXd q(8);
+  for (int i = 0; i < 6; ++i) q[i] = angle(rng);
+  q[6] = stroke(rng);
+  q[7] = stroke(rng);
+  return q;
+}
+
+}  // namespace
+
+TEST_CASE("gravity torques equal the sum of J_com^T m g over the links", "[dynamics]") {
+  const RobotModel& dut = ur5eHande();
+  const Eigen::Vector3d g(0, 0, -9.81);
+  std::mt19937_64 rng(3);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Eigen::VectorXd q = randomQ(rng);
+    Eigen::VectorXd expected = Eigen::VectorXd::Zero(8);
+    for (int l = 0; l < static_cast<int>(dut.links().size()); ++l) {
+      const LinkModel& link = dut.links()[l];
+      if (link.mass <= 0.0) continue;
+      const auto J = jacobian(dut, q, l, link.X_LCom.translation());
+      // holding still needs tau = -J^T (m g)
+      expected -= J.topRows<3>().transpose() * (link.mass * g);
+    }
+    REQUIRE((gravityTorques(dut, q, g) - expected).norm() < 1e-9);
+  }
+}
+
+TEST_CASE("mass matrix is symmetric positive definite and matches the kinetic energy", "[dynamics]") {
+  const RobotModel& dut = ur5eHande();
+  std::mt19937_64 rng(4);
+  std::normal_distribution<double> rate(0.0, 1.0);
+  for (int trial = 0; trial < 100; ++trial) {
+    const Eigen::VectorXd q = randomQ(rng);
+    const Eigen::MatrixXd M = massMatrix(dut, q);
+    REQUIRE(Eigen::LLT<Eigen::MatrixXd>(M).info() == Eigen::Success);
+    Eigen::VectorXd qd(8);
+    for (int i = 0; i < 8; ++i) qd[i] = rate(rng);
+    REQUIRE(0.5 * qd.dot(M * qd) == Approx(kineticEnergy(dut, q, qd)).epsilon(1e-10));
+  }
+}
+
+TEST_CASE("free motion computed from RNEA conserves energy (Coriolis terms)", "[dynamics]") {
+  const RobotModel& dut = ur5eHande();
+  std::mt19937_64 rng(6);
+  std::normal_distribution<double> rate(0.0, 1.0);
+  const Eigen::Vector3d no_gravity = Eigen::Vector3d::Zero();
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::VectorXd q = randomQ(rng);
+    Eigen::VectorXd qd(8);
+    for (int i = 0; i < 8; ++i) qd[i] = rate(rng);
+    // zero effort: M qdd = -(C qd)
+    const Eigen::VectorXd bias = inverseDynamics(dut, q, qd, Eigen::VectorXd::Zero(8), no_gravity);
+    const Eigen::VectorXd qdd = massMatrix(dut, q).ldlt().solve(-bias);
+    constexpr double h = 1e-6;
+    const double dT = (kineticEnergy(dut, q + h * qd, qd + h * qdd) - kineticEnergy(dut, q - h * qd, qd - h * qdd)) / (2 * h);
+    REQUIRE(std::abs(dT) < 1e-6 * (1.0 + kineticEnergy(dut, q, qd)));
+  }
+}
+
+TEST_CASE("the arm's moving mass matches UR's published link masses", "[dynamics]") {
+  const RobotModel& dut = ur5eHande();
+  double arm = 0.0;
+  for (const char* name : {"shoulder_link", "upper_arm_link", "forearm_link", "wrist_1_link", "wrist_2_link", "wrist_3_link"}) {
+    arm += dut.links()[dut.requireLink(name)].mass;
+  }
+  CHECK(arm == Approx(17.7).margin(1e-9));  // reference file: moving_mass_sum (S1)
+}
