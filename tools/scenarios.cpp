@@ -1,0 +1,379 @@
+#include "tools/scenarios.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <numbers>
+#include <stdexcept>
+#include <utility>
+
+#include "core/pose.h"
+
+namespace dashbed::tools {
+
+double ScenarioRng::uniform01() {
+  // top 53 bits of the raw output, scaled by 2^-53: exactly representable, in [0, 1)
+  return static_cast<double>(engine_() >> 11) * 0x1.0p-53;
+}
+
+double ScenarioRng::uniform(double lo, double hi) { return lo + (hi - lo) * uniform01(); }
+
+std::uint64_t ScenarioRng::index(std::uint64_t n) {
+  if (n == 0) throw std::invalid_argument("ScenarioRng::index: n must be positive");
+  // reject the top partial block of the 2^64 outputs so every residue is equally likely
+  const std::uint64_t limit = std::numeric_limits<std::uint64_t>::max() -
+                              std::numeric_limits<std::uint64_t>::max() % n;
+  std::uint64_t x = engine_();
+  while (x >= limit) x = engine_();
+  return x % n;
+}
+
+std::string toString(StartLayout layout) {
+  return layout == StartLayout::kCross ? "cross" : "random";
+}
+
+StartLayout parseStartLayout(const std::string& text) {
+  if (text == "cross") return StartLayout::kCross;
+  if (text == "random") return StartLayout::kRandom;
+  throw std::invalid_argument("start layout must be 'cross' or 'random', got '" + text + "'");
+}
+
+namespace {
+
+constexpr double kPi = std::numbers::pi;
+constexpr double kTableHeight = 0.75;  // [m], top face of every table
+constexpr double kCubeEdge = 0.04;     // [m], Hand-E opens to 50 mm
+constexpr double kCubeMass = 0.1;      // [kg]
+constexpr double kCubeFriction = 0.8;
+constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice cell per axis
+// cells are kMinCubeSpacing + 2 * kJitter apart so that jittered centres keep kMinCubeSpacing
+constexpr double kCellPitch = kMinCubeSpacing + 2.0 * kJitter;
+
+constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0};
+constexpr core::Color kWood{0.62, 0.45, 0.28};
+constexpr core::Color kShelfGrey{0.55, 0.56, 0.6};
+
+struct ClassInfo {
+  const char* name;
+  core::Color color;
+};
+constexpr std::array<ClassInfo, 4> kClasses{{
+    {"red", {0.85, 0.15, 0.15}},
+    {"green", {0.15, 0.7, 0.2}},
+    {"blue", {0.15, 0.3, 0.85}},
+    {"yellow", {0.95, 0.8, 0.1}},
+}};
+
+// A rectangular zone of cube centres in the table plane, given in a robot-like frame: origin
+// p_W, unit axis u_W (the frame's x), lateral axis v_W = z × u; the zone is
+// [x_lo, x_hi] × [y_lo, y_hi] in that frame.
+struct Zone {
+  Eigen::Vector2d p_W;
+  Eigen::Vector2d u_W;
+  double x_lo, x_hi, y_lo, y_hi;
+};
+
+// Lattice points of one axis: as many kCellPitch-spaced values as fit in [lo, hi], centred.
+std::vector<double> latticeAxis(double lo, double hi) {
+  const int count = static_cast<int>(std::floor((hi - lo) / kCellPitch + 1e-9)) + 1;
+  const double start = lo + 0.5 * ((hi - lo) - (count - 1) * kCellPitch);
+  std::vector<double> values;
+  for (int i = 0; i < count; ++i) values.push_back(start + i * kCellPitch);
+  return values;
+}
+
+std::vector<Eigen::Vector2d> zoneCells(const Zone& zone) {
+  const Eigen::Vector2d v_W(-zone.u_W.y(), zone.u_W.x());
+  std::vector<Eigen::Vector2d> cells;
+  for (double x : latticeAxis(zone.x_lo, zone.x_hi)) {
+    for (double y : latticeAxis(zone.y_lo, zone.y_hi)) {
+      cells.push_back(zone.p_W + x * zone.u_W + y * v_W);
+    }
+  }
+  return cells;
+}
+
+core::RobotSpec makeRobot(std::string name, const Eigen::Vector2d& p_W, double yaw) {
+  core::RobotSpec robot;
+  robot.name = std::move(name);
+  robot.model = "ur5e_hande";
+  robot.X_WBase = core::makePoseXyzYaw(Eigen::Vector3d(p_W.x(), p_W.y(), kTableHeight), yaw);
+  robot.home = kHome;
+  return robot;
+}
+
+core::FixtureSpec makeTable(double size_x, double size_y) {
+  core::FixtureSpec table;
+  table.name = "table";
+  table.type = core::FixtureType::kBox;
+  table.X_WF = core::Pose::Identity();
+  table.size = Eigen::Vector3d(size_x, size_y, kTableHeight);
+  table.color = kWood;
+  return table;
+}
+
+core::FixtureSpec makeBin(const ClassInfo& cls, const Eigen::Vector2d& p_W) {
+  core::FixtureSpec bin;
+  bin.name = std::string("bin_") + cls.name;
+  bin.type = core::FixtureType::kBin;
+  bin.X_WF = core::makePoseXyzYaw(Eigen::Vector3d(p_W.x(), p_W.y(), kTableHeight), 0.0);
+  bin.size = Eigen::Vector3d(0.2, 0.2, 0.08);
+  bin.wall_thickness = 0.008;
+  bin.color = cls.color;
+  return bin;
+}
+
+// A cube standing on the table at a jittered lattice cell with a random yaw.
+core::ObjectSpec makeCube(std::string name, const ClassInfo& cls, const Eigen::Vector2d& cell_W,
+                          ScenarioRng& rng) {
+  const double dx = rng.uniform(-kJitter, kJitter);
+  const double dy = rng.uniform(-kJitter, kJitter);
+  const double yaw = rng.uniform(-0.25 * kPi, 0.25 * kPi);
+  core::ObjectSpec cube;
+  cube.name = std::move(name);
+  cube.size = Eigen::Vector3d::Constant(kCubeEdge);
+  cube.mass = kCubeMass;
+  cube.friction = kCubeFriction;
+  cube.color = cls.color;
+  cube.object_class = cls.name;
+  cube.X_WO = core::makePoseXyzYaw(
+      Eigen::Vector3d(cell_W.x() + dx, cell_W.y() + dy, kTableHeight + 0.5 * kCubeEdge), yaw);
+  return cube;
+}
+
+// The robots of a sorting layout: base position, unit heading (exact, so that written
+// coordinates carry no rounding noise) and the classes whose bins they own.
+struct SortingRobot {
+  Eigen::Vector2d p_W;
+  Eigen::Vector2d heading_W;
+  std::vector<int> owned_classes;
+};
+
+std::string describeZoneCapacity(const char* zone, std::size_t fit, std::size_t wanted) {
+  return std::to_string(wanted) + " cubes must start in " + zone + " but only " +
+         std::to_string(fit) + " fit there (centres at least 0.1 m apart)";
+}
+
+}  // namespace
+
+core::World generateSorting(const SortingParams& params) {
+  if (params.robots != 2 && params.robots != 4) {
+    throw std::invalid_argument("sorting: robots must be 2 or 4, got " +
+                                std::to_string(params.robots));
+  }
+  if (params.classes < 1 || params.classes > 4) {
+    throw std::invalid_argument("sorting: classes must be in 1..4, got " +
+                                std::to_string(params.classes));
+  }
+  if (params.robots == 4 && params.classes != 4) {
+    throw std::invalid_argument("sorting: 4 robots need exactly 4 classes (one per robot), got " +
+                                std::to_string(params.classes));
+  }
+  if (params.cubes < 1) {
+    throw std::invalid_argument("sorting: cubes must be at least 1, got " +
+                                std::to_string(params.cubes));
+  }
+
+  core::World world;
+  std::vector<SortingRobot> robots;
+  std::vector<Zone> exclusive_zones;  // one per robot, in front of it
+  std::vector<Zone> random_zones;     // the zones random starts draw from
+  std::vector<Eigen::Vector2d> bin_positions(kClasses.size());
+
+  if (params.robots == 2) {
+    world.fixtures.push_back(makeTable(2.0, 1.4));
+    robots = {{{-0.7, 0.0}, {1.0, 0.0}, {0, 2}},  // r0 owns red, blue
+              {{0.7, 0.0}, {-1.0, 0.0}, {1, 3}}};  // r1 owns green, yellow
+    bin_positions = {{-0.5, -0.42}, {0.5, 0.42}, {-0.5, 0.42}, {0.5, -0.42}};
+    // zones in the world frame (identity frame): robot-exclusive strips and the shared area
+    const Eigen::Vector2d o(0.0, 0.0), x(1.0, 0.0);
+    exclusive_zones = {{o, x, -0.45, -0.25, -0.26, 0.26}, {o, x, 0.25, 0.45, -0.26, 0.26}};
+    random_zones = {{o, x, -0.45, 0.45, -0.26, 0.26}};
+  } else {
+    world.fixtures.push_back(makeTable(2.4, 2.4));
+    const std::array<Eigen::Vector2d, 4> headings{
+        Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, 1.0), Eigen::Vector2d(-1.0, 0.0),
+        Eigen::Vector2d(0.0, -1.0)};
+    for (int k = 0; k < 4; ++k) {
+      const Eigen::Vector2d& u = headings[k];
+      const Eigen::Vector2d v(-u.y(), u.x());  // the robot's left
+      // (+ 0.0 turns the -0.0 of an exact product into 0.0, which reads better when written)
+      const Eigen::Vector2d p = (-0.75 * u).array() + 0.0;
+      robots.push_back({p, u, {k}});
+      // the bin is beside the robot on its left and slightly behind it
+      bin_positions[k] = (p - 0.2 * u + 0.3 * v).array() + 0.0;
+      exclusive_zones.push_back({p, u, 0.25, 0.45, -0.15, 0.15});
+    }
+    random_zones = exclusive_zones;
+  }
+
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    const double yaw = std::atan2(robots[r].heading_W.y(), robots[r].heading_W.x());
+    world.robots.push_back(makeRobot("r" + std::to_string(r), robots[r].p_W, yaw));
+  }
+  for (int c = 0; c < params.classes; ++c) {
+    world.fixtures.push_back(makeBin(kClasses[c], bin_positions[c]));
+  }
+
+  // class of each cube (round robin) and the robot owning that class's bin
+  std::vector<int> cube_class(params.cubes);
+  std::vector<int> class_owner(kClasses.size(), -1);
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    for (int c : robots[r].owned_classes) class_owner[c] = static_cast<int>(r);
+  }
+  for (int i = 0; i < params.cubes; ++i) cube_class[i] = i % params.classes;
+
+  // start zone of each cube: cross puts a cube in front of a robot that cannot reach its bin
+  // (the other robot of two; the opposite robot of four)
+  std::vector<int> cube_zone(params.cubes, 0);
+  std::vector<Zone> zones;
+  if (params.start == StartLayout::kCross) {
+    zones = exclusive_zones;
+    const int n = params.robots;
+    for (int i = 0; i < params.cubes; ++i) {
+      const int owner = class_owner[cube_class[i]];
+      cube_zone[i] = (owner + n / 2) % n;
+    }
+  } else {
+    // random: one pooled zone (the union of the cells of all random zones)
+    zones = random_zones;
+  }
+
+  // cells per zone (pooled for random), shuffled by the seed
+  ScenarioRng rng(params.seed);
+  std::vector<std::vector<Eigen::Vector2d>> cells;
+  if (params.start == StartLayout::kCross) {
+    for (const Zone& zone : zones) cells.push_back(zoneCells(zone));
+  } else {
+    cells.emplace_back();
+    for (const Zone& zone : zones) {
+      const auto zone_cells = zoneCells(zone);
+      cells[0].insert(cells[0].end(), zone_cells.begin(), zone_cells.end());
+    }
+  }
+  for (std::size_t z = 0; z < cells.size(); ++z) {
+    const auto wanted = static_cast<std::size_t>(
+        std::count(cube_zone.begin(), cube_zone.end(), static_cast<int>(z)));
+    if (wanted > cells[z].size()) {
+      const std::string zone_name = params.start == StartLayout::kCross
+                                        ? "the zone of r" + std::to_string(z)
+                                        : std::string("the shared workspace");
+      throw std::invalid_argument("sorting: " +
+                                  describeZoneCapacity(zone_name.c_str(), cells[z].size(), wanted));
+    }
+    rng.shuffle(cells[z]);
+  }
+
+  std::vector<std::size_t> next_cell(cells.size(), 0);
+  for (int i = 0; i < params.cubes; ++i) {
+    const int z = cube_zone[i];
+    const ClassInfo& cls = kClasses[cube_class[i]];
+    world.objects.push_back(
+        makeCube("cube_" + std::to_string(i), cls, cells[z][next_cell[z]++], rng));
+  }
+  // a class goal for each class that has cubes (with fewer cubes than classes some bins stay
+  // empty; a goal for a class without objects would be an error in the world file)
+  for (int c = 0; c < std::min(params.classes, params.cubes); ++c) {
+    core::Goal goal;
+    goal.object_class = kClasses[c].name;
+    goal.region = std::string("bin_") + kClasses[c].name;
+    world.goals.push_back(goal);
+  }
+
+  const std::string layout = toString(params.start);
+  world.name = "sort_" + std::to_string(params.robots) + "r_" + std::to_string(params.cubes) +
+               "c_" + layout + "_s" + std::to_string(params.seed);
+  world.description =
+      "Sorting (DaSH paper): " + std::to_string(params.robots) + " UR5e + Hand-E robots " +
+      (params.robots == 2 ? "facing each other across a table" : "in a square facing the centre") +
+      " sort " + std::to_string(params.cubes) + " cubes of " + std::to_string(params.classes) +
+      " colour classes into their bins; " +
+      (params.start == StartLayout::kCross
+           ? "cross start (every cube starts away from its bin's robot and must be handed over)"
+           : "random start in the shared workspace") +
+      "; generated by `dashbed gen sort --robots " + std::to_string(params.robots) +
+      " --cubes " + std::to_string(params.cubes) + " --classes " +
+      std::to_string(params.classes) + " --start " + layout + " --seed " +
+      std::to_string(params.seed) + "`.";
+  return world;
+}
+
+core::World generateShelving(const ShelvingParams& params) {
+  if (params.objects < 2 || params.objects > 12 || params.objects % 2 != 0) {
+    throw std::invalid_argument("shelving: objects must be even and in 2..12, got " +
+                                std::to_string(params.objects));
+  }
+  constexpr int kColumns = 6;
+  constexpr double kBoardTop = kTableHeight + 0.2;  // [m], top face of the shelf board
+  constexpr double kBackX = 0.67, kFrontX = 0.56;   // [m], slot centres
+
+  core::World world;
+  world.fixtures.push_back(makeTable(2.0, 1.6));
+  world.robots.push_back(makeRobot("r0", Eigen::Vector2d(0.05, -0.35), 0.0));
+  world.robots.push_back(makeRobot("r1", Eigen::Vector2d(0.05, 0.35), 0.0));
+
+  // shelf: opening towards -x (the robots), one board 0.2 above the table and the top board
+  core::FixtureSpec shelf;
+  shelf.name = "shelf";
+  shelf.type = core::FixtureType::kShelf;
+  shelf.X_WF = core::makePoseXyzYaw(Eigen::Vector3d(0.6, 0.0, kTableHeight), 0.0);
+  shelf.size = Eigen::Vector3d(0.3, 1.0, 0.5);
+  shelf.wall_thickness = 0.02;
+  shelf.levels = {0.2};
+  shelf.color = kShelfGrey;
+  world.fixtures.push_back(shelf);
+
+  // a back and a front slot per column, the front one directly in front of the back one
+  auto slotName = [](int column, const char* side) {
+    return "slot_" + std::to_string(column) + "_" + side;
+  };
+  for (int j = 0; j < kColumns; ++j) {
+    const double y = (-35.0 + 14.0 * j) / 100.0;  // -0.35 + 0.14 j, rounded once
+    for (const auto& [side, x] : {std::pair{"back", kBackX}, std::pair{"front", kFrontX}}) {
+      core::Region region;
+      region.name = slotName(j, side);
+      region.X_WR = core::makePoseXyzYaw(Eigen::Vector3d(x, y, kBoardTop), 0.0);
+      region.size = Eigen::Vector3d(0.08, 0.08, 0.1);
+      world.regions.push_back(region);
+    }
+  }
+
+  ScenarioRng rng(params.seed);
+  std::vector<int> columns(kColumns);
+  for (int j = 0; j < kColumns; ++j) columns[j] = j;
+  rng.shuffle(columns);
+  const int pairs = params.objects / 2;
+  columns.resize(pairs);
+  std::sort(columns.begin(), columns.end());
+
+  // start cells on the table between the robots and the shelf
+  std::vector<Eigen::Vector2d> cells =
+      zoneCells({{0.0, 0.0}, {1.0, 0.0}, 0.2, 0.38, -0.6, 0.6});
+  rng.shuffle(cells);
+
+  const ClassInfo& green = kClasses[1];
+  const ClassInfo& blue = kClasses[2];
+  std::size_t next_cell = 0;
+  for (int k = 0; k < pairs; ++k) {
+    for (const auto& [cls, side] : {std::pair{&green, "back"}, std::pair{&blue, "front"}}) {
+      const std::string name = std::string(cls->name) + "_" + std::to_string(k);
+      world.objects.push_back(makeCube(name, *cls, cells[next_cell++], rng));
+      core::Goal goal;
+      goal.object = name;
+      goal.region = slotName(columns[k], side);
+      world.goals.push_back(goal);
+    }
+  }
+
+  world.name = "shelf_2r_" + std::to_string(params.objects) + "o_s" + std::to_string(params.seed);
+  world.description =
+      "Shelving (DaSH paper): 2 UR5e + Hand-E robots stock a shelf with " +
+      std::to_string(pairs) + " pairs of objects; each green object goes to a back slot and its "
+      "blue partner to the front slot directly in front of it, so green must be placed first; "
+      "generated by `dashbed gen shelf --objects " + std::to_string(params.objects) +
+      " --seed " + std::to_string(params.seed) + "`.";
+  return world;
+}
+
+}  // namespace dashbed::tools
