@@ -1,5 +1,6 @@
 #pragma once
-// Parallel-jaw grasps of box-shaped objects: where the TCP can be for a Hand-E to hold a box.
+// Parallel-jaw grasps of box-shaped objects: where the TCP can be for a Hand-E to hold a box
+// that rests upright on a surface.
 
 #include <vector>
 
@@ -11,19 +12,29 @@ namespace dashbed::core {
 
 /// Widest box face pair the Hand-E can close on: 2 x 25 mm stroke (reference file, S4-S7).
 inline constexpr double kHandeMaxOpening = 0.050;
+/// How far the fingertips reach beyond the TCP along the approach axis: tip end 145.5 mm vs
+/// TCP 132.5 mm from the Hand-E mounting face (reference file, S4/S6).
+inline constexpr double kFingertipBeyondTcp = 0.013;
+/// Half the Hand-E body's width (75 mm envelope, S5): from the side, the body passes this far
+/// below the TCP.
+inline constexpr double kHandeBodyHalfWidth = 0.0375;
 
 enum class GraspApproach { kTop, kSide };
 
 /// A grasp of a box: the TCP pose in the object's frame (z = approach direction, x = closing
-/// axis, TCP at the box centre) and how the gripper comes in.
+/// axis) and how the gripper comes in.
 struct BoxGrasp {
   Pose X_OT = Pose::Identity();
   GraspApproach approach = GraspApproach::kTop;
 };
 
-/// The grasps of a box of `size` resting upright: from above with the closing axis along each
-/// horizontal face normal (4), and from each horizontal side with a horizontal closing axis
-/// (8). Face pairs wider than the gripper opening minus `clearance` are left out.
+/// The grasps of a box of `size` resting upright on a surface:
+///  - from above, closing along each horizontal face normal (4), with the TCP at the box
+///    centre, or raised so the fingertips stay `clearance` above the surface;
+///  - from each horizontal side with a horizontal closing axis (8), only where the box is tall
+///    enough to hold the TCP high enough for the gripper body to clear the surface while the
+///    pads still overlap the box by at least 10 mm.
+/// Face pairs wider than the gripper opening minus `clearance` are left out.
 std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance = 0.005);
 
 }  // namespace dashbed::core

@@ -42,7 +42,8 @@ double yawDegrees(const core::Pose& X) {
 }
 
 void runSummary(const RunOptions& options) {
-  const std::filesystem::path file = options.world_file.empty() ? core::defaultWorldPath() : options.world_file;
+  const std::filesystem::path file =
+      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(file);
   const core::World& world = *loaded.world;
   const core::RobotSet& robots = *loaded.robots;

@@ -20,5 +20,9 @@ enum ExitCode : int {
 void addRunCommand(CLI::App& app);
 void addGenCommand(CLI::App& app);
 void addKinCommand(CLI::App& app);
+void addScriptCommand(CLI::App& app);
+void addSimCommand(CLI::App& app);
+void addBenchCommand(CLI::App& app);
+void addGraphCommand(CLI::App& app);
 
 }  // namespace dashbed::tools

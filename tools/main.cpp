@@ -16,6 +16,10 @@ int main(int argc, char** argv) {
   addRunCommand(app);
   addGenCommand(app);
   addKinCommand(app);
+  addScriptCommand(app);
+  addSimCommand(app);
+  addBenchCommand(app);
+  addGraphCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

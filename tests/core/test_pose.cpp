@@ -27,7 +27,7 @@ TEST_CASE("rpy is fixed-axis roll, then pitch, then yaw", "[pose]") {
   REQUIRE((R2 * Eigen::Vector3d::UnitZ() - Eigen::Vector3d::UnitX()).norm() < 1e-15);
 }
 
-TEST_CASE("wrapToPi maps into (-pi, pi]", "[pose]") {
+TEST_CASE("wrapToPi maps angles into the interval from -pi (open) to pi (closed)", "[pose]") {
   REQUIRE(wrapToPi(std::numbers::pi) == Approx(std::numbers::pi));
   REQUIRE(wrapToPi(-std::numbers::pi) == Approx(std::numbers::pi));
   REQUIRE(wrapToPi(3 * std::numbers::pi / 2) == Approx(-std::numbers::pi / 2));

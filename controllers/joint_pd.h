@@ -1,0 +1,40 @@
+#pragma once
+// Joint-space PD of a UR arm with gravity compensation and inverse-dynamics feed-forward
+// (computed-torque form), producing torques clamped to the joints' effort limits.
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "controllers/trajectory_interpolator.h"
+#include "core/robot_model.h"
+#include "core/world.h"
+
+namespace dashbed::controllers {
+
+struct ArmTorques {
+  Vector6 tau{};                ///< [Nm] applied, after clamping
+  bool saturated = false;       ///< some joint hit its effort limit
+  double max_effort_ratio = 0;  ///< max |tau_unclamped| / limit
+};
+
+class JointPdController {
+ public:
+  /// `gravity_root`: gravity in the robot's root frame [m/s^2]. The model (arm joints first
+  /// in q) must outlive the controller.
+  JointPdController(const core::RobotModel& model, const core::ControllerSettings& settings,
+                    const Eigen::Vector3d& gravity_root);
+
+  /// tau = M(q) (qdd_ref + kp (q_ref - q) + kd (qd_ref - qd)) + c(q, qd) + g(q) for the six
+  /// arm joints; q and qd hold all the model's joints (the fingers' accelerations are taken
+  /// as zero). Each torque is clamped to +-max_effort of its joint.
+  ArmTorques compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const JointReference& ref) const;
+
+ private:
+  const core::RobotModel& model_;
+  core::ControllerSettings settings_;
+  Eigen::Vector3d gravity_root_;
+  Vector6 effort_limit_{};
+};
+
+}  // namespace dashbed::controllers

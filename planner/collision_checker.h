@@ -1,0 +1,225 @@
+#pragma once
+// Collision checking for the DaSH planner: robots (UR5e + Hand-E) against the fixtures, the
+// resting objects, each other and themselves, with a held object moving with its gripper.
+//
+// Model / state split: a CollisionScene is built once from a World and its RobotSet and never
+// changes; a CollisionChecker holds the scratch state of the queries (body poses, the FCL
+// narrow-phase solver, counters). A checker must not be shared between threads: make one per
+// thread, all reading the same scene.
+//
+// Geometry. Robots: the URDF's convex primitives (box, cylinder, sphere) of every link, each
+// grown by CollisionSettings::margin on every side (box: edges + 2 margin; cylinder: radius +
+// margin, length + 2 margin; sphere: radius + margin). A held object is the object's box, grown
+// by the same margin. Fixtures: the world's fixture boxes (FixtureSpec::boxes) plus a floor
+// (top face at z = 0). Resting objects: their boxes, not grown. The exact decision for every
+// pair of shapes is FCL's primitive narrow phase (the GJK/libccd solver that fcl::collide uses
+// by default, with its dedicated box-box, sphere-box, sphere-cylinder routines). In front of it:
+// a broad phase (FCL's dynamic AABB tree over the static boxes, queried with each robot body's
+// bounding sphere), bounding spheres per body and per shape, and separating-axis tests with the
+// shapes' exact projections, which only skip pairs at least 10 um apart; a shape whose centre
+// lies inside the other shape is a hit without FCL. So the answer is the same as running
+// fcl::collide on every pair (tests/planner/test_collision_checker.cpp checks this against such
+// a brute-force loop on thousands of random configurations), just faster: FK of the eight
+// bodies (links joined by fixed joints merged), then mostly sphere tests.
+//
+// What is checked (and what not):
+//  - robot links against the static scene, except the links that no joint moves (the base,
+//    which stands on its support by construction);
+//  - robot links against the resting objects passed to the query;
+//  - self-collision between link groups that are not ignored: links joined by fixed joints
+//    form one rigid body; a body pair is ignored when the bodies are joined by one joint
+//    (adjacent), or collide at the robot's home configuration with the fingers open or closed
+//    (e.g. the two fingers, whose pads touch when closed), or collide in at least
+//    `self_pair_always_fraction` of `self_pair_samples` seeded random configurations
+//    (overlapping by construction). CollisionScene::ignoredSelfPairs lists them with reasons;
+//  - robot against robot: every body pair except base against base, held objects included;
+//  - a held object against the static scene (unless HeldObject::check_static is false), the
+//    resting objects, its robot's bodies except the fingers it is held by, and the other
+//    robot; when two robots hold the same object (a handoff) the object is not checked
+//    against either robot's fingers.
+//
+// Motions are straight lines in joint space, checked at samples spaced so that no point of
+// the robot (held object included) travels more than CollisionSettings::motion_step between
+// two samples. The bound on a point's travel is sum_j R_j |dq_j|, where R_j bounds the distance
+// of any point moved by joint j from that joint's origin (1 for prismatic joints, whose points
+// move by |dq_j|). Every point of the swept volume between two samples is then within
+// motion_step / 2 of its place at the nearer sample, so with motion_step <= 2 margin the grown
+// shapes at the samples cover the true shapes everywhere between them: the discrete check
+// misses no collision of the true geometry. The defaults (margin 2 mm, step 4 mm) satisfy it.
+// For the UR5e + Hand-E the bounds R_j are 1.23, 1.23, 0.81, 0.39, 0.29, 0.19 m (sum 4.1 m):
+// a turn of the base alone is sampled every 3.3 mrad, all six joints turning together every
+// 1 mrad (0.5 rad on every joint: 518 samples).
+
+#include <cstdint>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <Eigen/Core>
+
+#include "core/pose.h"
+#include "core/robot_set.h"
+#include "core/world.h"
+
+namespace dashbed::planner {
+
+/// Settings of the collision checker. Lengths in metres.
+struct CollisionSettings {
+  double margin = 0.002;       ///< every moving shape (robot links, held objects) grows by this [m]
+  double motion_step = 0.004;  ///< max travel of any robot point between two motion samples [m]
+  int self_pair_samples = 1000;            ///< random configurations for the self-collision pairs
+  double self_pair_always_fraction = 0.95;  ///< body pairs colliding this often are ignored
+  std::uint64_t self_pair_seed = 1;         ///< seed of those samples
+
+  /// Throws std::invalid_argument naming the field when a value is out of range (margin < 0,
+  /// motion_step <= 0, samples < 0, fraction outside (0, 1]).
+  void validate() const;
+  /// True when motion checks cannot miss a collision of the true geometry (step <= 2 margin).
+  bool motionChecksConservative() const { return motion_step <= 2.0 * margin + 1e-12; }
+};
+
+/// An object held by a robot's gripper: it moves with the TCP and is part of the robot.
+struct HeldObject {
+  int object = -1;                           ///< index into World::objects
+  core::Pose X_TO = core::Pose::Identity();  ///< object pose in the TCP frame
+  /// False while the object still sits on its support (closing, lift-off, set-down): the
+  /// object is then not checked against the static scene (it touches it by construction).
+  bool check_static = true;
+};
+
+/// An object resting in the world during a query.
+struct RestingObject {
+  int object = -1;                           ///< index into World::objects
+  core::Pose X_WO = core::Pose::Identity();  ///< pose of the object's centre in W
+};
+
+/// Every object of the world at its start pose.
+std::vector<RestingObject> startPlacement(const core::World& world);
+
+/// A timed joint path of one robot: configurations (all model positions, arm then fingers)
+/// at strictly increasing times t [s], linear in between. Before t.front() the robot holds
+/// q.front(), after t.back() it holds q.back().
+struct TimedPath {
+  std::vector<double> t;
+  std::vector<Eigen::VectorXd> q;
+};
+
+/// A self-collision body pair the checker never tests, and why.
+struct IgnoredSelfPair {
+  std::string body_a;  ///< named after the body's first link
+  std::string body_b;
+  std::string reason;  ///< "adjacent", "home" or "always (<fraction>)"
+};
+
+namespace detail {
+struct SceneData;
+struct CheckerState;
+}  // namespace detail
+
+/// The immutable collision model of a world: static geometry in a broad phase, the robots'
+/// link geometry grouped into rigid bodies, the object boxes, the self-collision pairs.
+class CollisionScene {
+ public:
+  /// Builds the scene. `robots` must have been made from `world`; both must outlive the
+  /// scene. Throws std::invalid_argument on bad settings or when a robot model has no `tcp`
+  /// link.
+  CollisionScene(const core::World& world, const core::RobotSet& robots,
+                 const CollisionSettings& settings = {});
+  ~CollisionScene();
+  CollisionScene(const CollisionScene&) = delete;
+  CollisionScene& operator=(const CollisionScene&) = delete;
+
+  const CollisionSettings& settings() const;
+  int numRobots() const;
+  int numObjects() const;
+  /// Number of configuration entries of a robot (arm joints then fingers).
+  int numPositions(int robot) const;
+
+  /// The static boxes in W: every fixture's boxes, then the floor (last).
+  const std::vector<core::Box>& staticBoxes() const;
+
+  /// Whether the self-collision check tests links `link_a` and `link_b` of `robot` (link
+  /// indices of the robot's model). False for links of the same rigid body and ignored pairs.
+  bool selfPairChecked(int robot, int link_a, int link_b) const;
+  /// The ignored body pairs of a robot with their reasons.
+  std::vector<IgnoredSelfPair> ignoredSelfPairs(int robot) const;
+  /// Whether a link is moved by some joint (links fixed to the base are not checked against
+  /// the static scene).
+  bool linkMoves(int robot, int link) const;
+  /// Whether a held object is exempt from colliding with this link (the gripper's fingers).
+  bool linkHoldsObjects(int robot, int link) const;
+  /// Index of the TCP link (`tcp`) in the robot's model.
+  int tcpLink(int robot) const;
+
+  /// R_j: bound on the distance of any point that joint `q_index` moves from the joint's
+  /// origin, without a held object [m] (1 for prismatic joints).
+  double jointTravelRadius(int robot, int q_index) const;
+  /// Number of intervals a straight joint-space motion is split into so that no robot point
+  /// (held object included) travels more than settings().motion_step between samples (>= 1).
+  int motionSteps(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                  const std::optional<HeldObject>& held = std::nullopt) const;
+
+ private:
+  friend class CollisionChecker;
+  std::unique_ptr<detail::SceneData> data_;
+};
+
+/// Collision queries on a CollisionScene. Owns per-thread scratch state; cheap to construct.
+/// Configurations q hold every model position (for the UR5e + Hand-E: six arm angles [rad],
+/// then the two finger positions [m], 0 = closed, 0.025 = open). Functions throw
+/// std::invalid_argument for a bad robot or object index or a q of the wrong size.
+class CollisionChecker {
+ public:
+  /// Counts of work done, for benchmarks and tuning.
+  struct Counters {
+    std::uint64_t configurations = 0;  ///< robot configurations evaluated (FK + checks)
+    std::uint64_t narrow_phase = 0;    ///< FCL primitive pair tests
+  };
+
+  explicit CollisionChecker(const CollisionScene& scene);
+  ~CollisionChecker();
+  CollisionChecker(const CollisionChecker&) = delete;
+  CollisionChecker& operator=(const CollisionChecker&) = delete;
+
+  /// One robot against the static scene, the resting `objects` and itself, holding `held`
+  /// if given. An entry of `objects` naming the held object is skipped. True when free.
+  bool robotFree(int robot, const Eigen::VectorXd& q, std::span<const RestingObject> objects,
+                 const std::optional<HeldObject>& held = std::nullopt);
+
+  /// Robot against robot only (bodies and held objects of both). True when free.
+  bool robotsFree(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,
+                  int robot_b, const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b);
+
+  /// The straight joint-space motion q_from -> q_to of one robot, checked like robotFree at
+  /// CollisionScene::motionSteps samples (both ends included) in bisection order (midpoint
+  /// first, then the quarter points, ...) so that blocked motions fail early.
+  bool motionFree(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                  std::span<const RestingObject> objects,
+                  const std::optional<HeldObject>& held = std::nullopt);
+
+  /// Two robots moving at the same time along straight joint-space motions that start and end
+  /// together, checked robot against robot only (each motion is assumed checked on its own)
+  /// at common samples fine enough for both, in bisection order.
+  bool motionsFree(int robot_a, const Eigen::VectorXd& q_a_from, const Eigen::VectorXd& q_a_to,
+                   const std::optional<HeldObject>& held_a, int robot_b,
+                   const Eigen::VectorXd& q_b_from, const Eigen::VectorXd& q_b_to,
+                   const std::optional<HeldObject>& held_b);
+
+  /// Two timed paths, robot against robot only: split at the union of both paths' times,
+  /// each piece checked with motionsFree. Throws std::invalid_argument for an empty path,
+  /// mismatched sizes or times that do not increase.
+  bool timedPathsFree(int robot_a, const TimedPath& path_a, const std::optional<HeldObject>& held_a,
+                      int robot_b, const TimedPath& path_b, const std::optional<HeldObject>& held_b);
+
+  const Counters& counters() const { return counters_; }
+  void resetCounters() { counters_ = {}; }
+
+ private:
+  const CollisionScene* scene_;
+  std::unique_ptr<detail::CheckerState> state_;
+  Counters counters_;
+};
+
+}  // namespace dashbed::planner

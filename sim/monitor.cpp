@@ -1,0 +1,612 @@
+#include "sim/monitor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <optional>
+#include <set>
+#include <sstream>
+
+namespace dashbed::sim {
+namespace {
+
+using core::ActionType;
+using core::GripperAction;
+using core::Pose;
+
+// Time after both pads first touch before the object's pose in the gripper is taken as the
+// reference for slip: the fingers finish squeezing within it.
+constexpr double kGraspSettle = 0.1;  // [s]
+// Both pads must lose the object for this long before it counts as dropped (a pad may chatter
+// for a step or two when the load changes).
+constexpr double kDropDebounce = 0.05;  // [s]
+// Minimum time both grippers must hold the object together in a handoff.
+constexpr double kMinHandoffOverlap = 0.05;  // [s]
+// Displacement of an object at rest that counts as knocking it.
+constexpr double kKnockDistance = 0.005;  // [m]
+constexpr double kKnockAngle = 0.1;       // [rad]
+
+std::string fmt(double value, int precision = 4) {
+  std::ostringstream out;
+  out.precision(precision);
+  out << value;
+  return out.str();
+}
+
+double rotationAngle(const Eigen::Matrix3d& R) { return Eigen::AngleAxisd(R).angle(); }
+
+/// Smallest angle between any object axis and the world vertical.
+double tiltFromFlat(const Pose& X_WO) {
+  double best = M_PI;
+  for (int k = 0; k < 3; ++k) {
+    best = std::min(best, std::acos(std::min(1.0, std::abs(X_WO.linear().col(k).z()))));
+  }
+  return best;
+}
+
+struct HoldEpisode {
+  int robot = -1;
+  int object = -1;
+  double grasp_time = 0.0;
+  std::optional<double> release_time;
+  bool reference_set = false;
+  Pose X_TO_reference = Pose::Identity();
+  double max_slip = 0.0;
+  double max_slip_angle = 0.0;
+  double slip_time = -1.0;  // when slip first exceeded the tolerance
+  std::optional<double> lost_since;
+  std::optional<double> drop_time;
+};
+
+struct ActionTrack {
+  const core::PlanAction* action = nullptr;
+  int robot = -1;
+  int receiver = -1;
+  int object = -1;
+  int region = -1;
+  std::optional<double> command_time;   // pick: close; place: open; handoff: receiver close
+  std::optional<double> command2_time;  // handoff: giver open
+  // pick
+  std::optional<double> both_pads_time;
+  bool end_sampled = false;
+  bool held_at_end = false;
+  bool support_contact_at_end = false;
+  double lift_height = 0.0;
+  // handoff
+  double overlap = 0.0;
+  std::vector<std::string> foreign_contacts;
+  bool giver_touching_at_end = false;
+  // place
+  bool placement_sampled = false;
+  std::optional<double> placement_time;
+  Pose placement_pose = Pose::Identity();
+  double placement_speed = 0.0;
+};
+
+}  // namespace
+
+struct Monitor::State {
+  const Simulation& sim;
+  const core::Plan& plan;
+  double offset;
+  const core::World& world;
+  std::vector<int> left_finger, right_finger;  // model link index per robot
+  std::vector<int> tcp;
+  std::vector<ActionTrack> actions;
+  std::vector<HoldEpisode> holds;               // all episodes, in order of start
+  std::vector<int> active_hold;                 // per robot: index into holds or -1
+  std::vector<Pose> rest_pose;                  // per object
+  std::vector<bool> knocked;                    // per object: currently displaced from rest
+  std::vector<bool> settling;                   // per object: manipulated, or released and not yet at rest
+  std::vector<int> last_toucher;                // per object: robot that touched it last
+  std::vector<double> start_z;                  // per object
+  std::set<std::string> touching_pairs;         // unplanned pairs touching in the last step
+  std::vector<ExecutionEvent> events;
+
+  State(const Simulation& s, const core::Plan& p, double o) : sim(s), plan(p), offset(o), world(s.world()) {}
+
+  double planTime() const { return sim.time() - offset; }
+
+  int robotIndex(const std::string& name) const {
+    for (std::size_t r = 0; r < world.robots.size(); ++r) {
+      if (world.robots[r].name == name) return static_cast<int>(r);
+    }
+    return -1;
+  }
+  int objectIndex(const std::string& name) const {
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+      if (world.objects[o].name == name) return static_cast<int>(o);
+    }
+    return -1;
+  }
+
+  std::string bodyName(const BodyRef& ref) const {
+    switch (ref.kind) {
+      case BodyRef::Kind::kFloor: return "floor";
+      case BodyRef::Kind::kFixture: return world.fixtures[ref.index].name;
+      case BodyRef::Kind::kObject: return world.objects[ref.index].name;
+      case BodyRef::Kind::kRobot:
+        return world.robots[ref.index].name + "/" + sim.robots()[ref.index].model->links()[ref.link].name;
+    }
+    return "?";
+  }
+
+  bool isFinger(const BodyRef& ref) const {
+    return ref.kind == BodyRef::Kind::kRobot &&
+           (ref.link == left_finger[ref.index] || ref.link == right_finger[ref.index]);
+  }
+
+  /// True when robot r is in an action on object o at plan time t.
+  bool inActionWith(int r, int o, double t) const {
+    for (const ActionTrack& a : actions) {
+      if (a.object != o || (a.robot != r && a.receiver != r)) continue;
+      if (t >= a.action->start - 1e-9 && t <= a.action->end + 1e-9) return true;
+    }
+    return false;
+  }
+
+  /// The action an event on object o (or by robot r) at time t belongs to: one in progress,
+  /// else the next one of the object, else the last one before.
+  const ActionTrack* attribute(int r, int o, double t) const {
+    const ActionTrack* next = nullptr;
+    const ActionTrack* previous = nullptr;
+    for (const ActionTrack& a : actions) {
+      const bool involved = (o >= 0 && a.object == o) || (o < 0 && (a.robot == r || a.receiver == r));
+      if (!involved) continue;
+      if (t >= a.action->start - 1e-9 && t <= a.action->end + 1e-9) return &a;
+      if (a.action->start > t && (next == nullptr || a.action->start < next->action->start)) next = &a;
+      if (a.action->end < t && (previous == nullptr || a.action->end > previous->action->end)) previous = &a;
+    }
+    return next != nullptr ? next : previous;
+  }
+
+  void addEvent(double t, std::string kind, std::string detail, const ActionTrack* action) {
+    ExecutionEvent event;
+    event.t = t;
+    event.kind = std::move(kind);
+    event.detail = std::move(detail);
+    if (action != nullptr) event.action = actionId(*action->action);
+    events.push_back(std::move(event));
+  }
+
+  static std::string actionId(const core::PlanAction& a) {
+    switch (a.type) {
+      case ActionType::kPick: return "pick " + a.object + " by " + a.robot;
+      case ActionType::kPlace: return "place " + a.object + " in " + a.region + " by " + a.robot;
+      case ActionType::kHandoff: return "handoff " + a.object + " from " + a.robot + " to " + a.receiver;
+    }
+    return "?";
+  }
+};
+
+Monitor::Monitor(const Simulation& sim, const core::Plan& plan, double plan_time_offset)
+    : state_(std::make_unique<State>(sim, plan, plan_time_offset)) {
+  State& s = *state_;
+  for (const auto& robot : sim.robots().robots()) {
+    s.left_finger.push_back(robot.model->requireLink("hande_left_finger"));
+    s.right_finger.push_back(robot.model->requireLink("hande_right_finger"));
+    s.tcp.push_back(robot.model->requireLink("tcp"));
+  }
+  s.active_hold.assign(s.world.robots.size(), -1);
+  for (std::size_t o = 0; o < s.world.objects.size(); ++o) {
+    s.rest_pose.push_back(sim.objectPose(static_cast<int>(o)));
+    s.start_z.push_back(s.world.objects[o].X_WO.translation().z());
+  }
+  s.knocked.assign(s.world.objects.size(), false);
+  s.settling.assign(s.world.objects.size(), false);
+  s.last_toucher.assign(s.world.objects.size(), -1);
+  for (const core::PlanAction& action : plan.actions) {
+    ActionTrack track;
+    track.action = &action;
+    track.robot = s.robotIndex(action.robot);
+    track.receiver = s.robotIndex(action.receiver);
+    track.object = s.objectIndex(action.object);
+    if (!action.region.empty()) {
+      for (std::size_t g = 0; g < s.world.regions.size(); ++g) {
+        if (s.world.regions[g].name == action.region) track.region = static_cast<int>(g);
+      }
+    }
+    // the gripper commands that carry the action out
+    for (const core::GripperCommand& c : plan.gripper) {
+      if (c.t < action.start - 1e-9 || c.t > action.end + 1e-9) continue;
+      if (action.type == ActionType::kPick && c.robot == action.robot && c.action == GripperAction::kClose &&
+          !track.command_time) {
+        track.command_time = c.t;
+      }
+      if (action.type == ActionType::kPlace && c.robot == action.robot && c.action == GripperAction::kOpen &&
+          !track.command_time) {
+        track.command_time = c.t;
+      }
+      if (action.type == ActionType::kHandoff) {
+        if (c.robot == action.receiver && c.action == GripperAction::kClose && !track.command_time) track.command_time = c.t;
+        if (c.robot == action.robot && c.action == GripperAction::kOpen && !track.command2_time) track.command2_time = c.t;
+      }
+    }
+    s.actions.push_back(track);
+  }
+}
+
+Monitor::~Monitor() = default;
+
+void Monitor::observe(const PlanExecutor& executor) {
+  State& s = *state_;
+  const double t = s.planTime();
+  const double dt = s.sim.timeStep();
+  const std::size_t num_robots = s.world.robots.size();
+  const std::size_t num_objects = s.world.objects.size();
+
+  // who touches what
+  std::vector<std::set<int>> left(num_robots), right(num_robots);   // objects touched by each finger
+  std::vector<bool> support(num_objects, false);                    // object touches scenery or another object
+  std::vector<std::vector<std::string>> touched_by(num_objects);    // everything touching each object
+  std::set<std::string> unplanned_now;
+  for (const Contact& c : s.sim.contacts()) {
+    for (int side = 0; side < 2; ++side) {
+      const BodyRef& a = side == 0 ? c.a : c.b;
+      const BodyRef& b = side == 0 ? c.b : c.a;
+      if (a.kind != BodyRef::Kind::kObject) continue;
+      touched_by[a.index].push_back(s.bodyName(b));
+      if (b.kind == BodyRef::Kind::kRobot) {
+        s.last_toucher[a.index] = b.index;
+        if (b.link == s.left_finger[b.index]) left[b.index].insert(a.index);
+        if (b.link == s.right_finger[b.index]) right[b.index].insert(a.index);
+        const bool planned = s.isFinger(b) && (s.inActionWith(b.index, a.index, t) ||
+                                               (s.active_hold[b.index] >= 0 && s.holds[s.active_hold[b.index]].object == a.index));
+        if (!planned) unplanned_now.insert(s.bodyName(b) + " touches " + s.bodyName(a));
+      } else {
+        support[a.index] = true;
+      }
+    }
+    if (c.a.kind == BodyRef::Kind::kRobot || c.b.kind == BodyRef::Kind::kRobot) {
+      const BodyRef& robot = c.a.kind == BodyRef::Kind::kRobot ? c.a : c.b;
+      const BodyRef& other = c.a.kind == BodyRef::Kind::kRobot ? c.b : c.a;
+      if (other.kind == BodyRef::Kind::kRobot && other.index != robot.index) {
+        unplanned_now.insert("robot-robot contact: " + s.bodyName(c.a) + " touches " + s.bodyName(c.b));
+      } else if (other.kind == BodyRef::Kind::kFixture || other.kind == BodyRef::Kind::kFloor) {
+        unplanned_now.insert("robot-fixture contact: " + s.bodyName(robot) + " touches " + s.bodyName(other));
+      }
+    }
+  }
+  // an unplanned pair is reported when it starts touching
+  for (const std::string& pair : unplanned_now) {
+    if (s.touching_pairs.count(pair) != 0) continue;
+    const auto colon = pair.find(':');
+    const std::string kind = colon == std::string::npos ? "unplanned contact with object" : pair.substr(0, colon);
+    const std::string detail = colon == std::string::npos ? pair : pair.substr(colon + 2);
+    // attribute to an action of the first robot named in the pair
+    int robot = -1;
+    for (std::size_t r = 0; r < num_robots && robot < 0; ++r) {
+      if (detail.rfind(s.world.robots[r].name + "/", 0) == 0) robot = static_cast<int>(r);
+    }
+    s.addEvent(t, kind, detail, robot >= 0 ? s.attribute(robot, -1, t) : nullptr);
+  }
+  s.touching_pairs = unplanned_now;
+
+  // grasp episodes
+  for (std::size_t r = 0; r < num_robots; ++r) {
+    const bool closed = executor.gripper(static_cast<int>(r)).state() == GripperAction::kClose;
+    int& active = s.active_hold[r];
+    if (active < 0) {
+      if (!closed) continue;
+      for (int o : left[r]) {
+        if (right[r].count(o) == 0) continue;
+        HoldEpisode episode;
+        episode.robot = static_cast<int>(r);
+        episode.object = o;
+        episode.grasp_time = t;
+        s.holds.push_back(episode);
+        active = static_cast<int>(s.holds.size()) - 1;
+        break;
+      }
+      continue;
+    }
+    HoldEpisode& hold = s.holds[active];
+    if (!closed) {
+      hold.release_time = t;
+      active = -1;
+      continue;
+    }
+    const bool both = left[r].count(hold.object) != 0 && right[r].count(hold.object) != 0;
+    const Pose X_TO = s.sim.linkPose(static_cast<int>(r), s.tcp[r]).inverse() * s.sim.objectPose(hold.object);
+    if (both) {
+      hold.lost_since.reset();
+      if (!hold.reference_set && t - hold.grasp_time >= kGraspSettle) {
+        hold.reference_set = true;
+        hold.X_TO_reference = X_TO;
+      }
+      if (hold.reference_set) {
+        const double slip = (X_TO.translation() - hold.X_TO_reference.translation()).norm();
+        const double angle = rotationAngle(hold.X_TO_reference.linear().transpose() * X_TO.linear());
+        hold.max_slip = std::max(hold.max_slip, slip);
+        hold.max_slip_angle = std::max(hold.max_slip_angle, angle);
+        if (hold.slip_time < 0 && (slip > s.world.checks.slip_tolerance || angle > s.world.checks.slip_angle_tolerance)) {
+          hold.slip_time = t;
+          s.addEvent(t, "slip",
+                     s.world.objects[hold.object].name + " slipped " + fmt(slip * 1e3) + " mm / " + fmt(angle) +
+                         " rad in the gripper of " + s.world.robots[r].name,
+                     s.attribute(static_cast<int>(r), hold.object, t));
+        }
+      }
+    } else {
+      if (!hold.lost_since) hold.lost_since = t;
+      if (t - *hold.lost_since >= kDropDebounce) {
+        hold.drop_time = *hold.lost_since;
+        s.addEvent(*hold.lost_since, "drop",
+                   s.world.robots[r].name + " lost " + s.world.objects[hold.object].name + " with its gripper closed",
+                   s.attribute(static_cast<int>(r), hold.object, *hold.lost_since));
+        active = -1;
+      }
+    }
+  }
+
+  // knocked objects: an object nobody is manipulating moves away from where it rested
+  for (std::size_t o = 0; o < num_objects; ++o) {
+    const int oi = static_cast<int>(o);
+    bool manipulated = false;
+    for (std::size_t r = 0; r < num_robots; ++r) {
+      if ((s.active_hold[r] >= 0 && s.holds[s.active_hold[r]].object == oi) || s.inActionWith(static_cast<int>(r), oi, t)) {
+        manipulated = true;
+      }
+    }
+    const Pose X = s.sim.objectPose(oi);
+    const double speed = s.sim.objectLinearVelocity(oi).norm();
+    // while manipulated, and after a release until the object comes to rest, its rest pose
+    // follows it: only an object that has settled can be knocked
+    if (manipulated) s.settling[o] = true;
+    if (s.settling[o]) {
+      s.rest_pose[o] = X;
+      s.knocked[o] = false;
+      if (!manipulated && speed < s.world.checks.rest_speed) s.settling[o] = false;
+      continue;
+    }
+    const double moved = (X.translation() - s.rest_pose[o].translation()).norm();
+    const double turned = rotationAngle(s.rest_pose[o].linear().transpose() * X.linear());
+    if (!s.knocked[o] && (moved > kKnockDistance || turned > kKnockAngle)) {
+      s.knocked[o] = true;
+      const int toucher = s.last_toucher[o];
+      std::string detail = s.world.objects[o].name + " moved " + fmt(moved * 1e3) + " mm from rest";
+      if (toucher >= 0) detail += " (last touched by " + s.world.robots[toucher].name + ")";
+      s.addEvent(t, "knocked object", detail, toucher >= 0 ? s.attribute(toucher, -1, t) : s.attribute(-1, oi, t));
+    }
+    // at rest and untouched by robots: this is its new rest pose
+    const bool robot_touching = std::any_of(touched_by[o].begin(), touched_by[o].end(), [&](const std::string& name) {
+      return name.find('/') != std::string::npos;
+    });
+    if (speed < s.world.checks.rest_speed && !robot_touching && !s.knocked[o]) s.rest_pose[o] = X;
+  }
+
+  // per-action observations
+  for (ActionTrack& a : s.actions) {
+    if (a.object < 0) continue;
+    const core::PlanAction& action = *a.action;
+    switch (action.type) {
+      case ActionType::kPick: {
+        if (a.command_time && !a.both_pads_time && t >= *a.command_time && a.robot >= 0 &&
+            left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0) {
+          a.both_pads_time = t;
+        }
+        if (!a.end_sampled && t >= action.end) {
+          a.end_sampled = true;
+          a.held_at_end = a.robot >= 0 && left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0;
+          a.support_contact_at_end = support[a.object];
+          a.lift_height = s.sim.objectPose(a.object).translation().z() - s.start_z[a.object];
+        }
+        break;
+      }
+      case ActionType::kHandoff: {
+        if (t < action.start || t > action.end || a.robot < 0 || a.receiver < 0) break;
+        const bool giver = left[a.robot].count(a.object) && right[a.robot].count(a.object);
+        const bool receiver = left[a.receiver].count(a.object) && right[a.receiver].count(a.object);
+        if (giver && receiver) a.overlap += dt;
+        for (const std::string& name : touched_by[a.object]) {
+          const bool gripper = name.rfind(s.world.robots[a.robot].name + "/", 0) == 0 ||
+                               name.rfind(s.world.robots[a.receiver].name + "/", 0) == 0;
+          if (!gripper && std::find(a.foreign_contacts.begin(), a.foreign_contacts.end(), name) == a.foreign_contacts.end()) {
+            a.foreign_contacts.push_back(name);
+          }
+        }
+        a.giver_touching_at_end = left[a.robot].count(a.object) || right[a.robot].count(a.object);
+        a.held_at_end = receiver;
+        break;
+      }
+      case ActionType::kPlace: {
+        if (!a.command_time || a.placement_sampled) break;
+        if (t >= std::max(*a.command_time + s.world.checks.settle_time, action.end)) {
+          a.placement_sampled = true;
+          a.placement_time = t;
+          a.placement_pose = s.sim.objectPose(a.object);
+          a.placement_speed = s.sim.objectLinearVelocity(a.object).norm();
+        }
+        break;
+      }
+    }
+  }
+}
+
+Report Monitor::finish(const PlanExecutor& executor) {
+  State& s = *state_;
+  const core::CheckSettings& checks = s.world.checks;
+  Report report;
+  report.world = s.world.name;
+  report.seed = s.plan.seed;
+  report.time_step = s.sim.timeStep();
+  report.simulated_time = s.planTime();
+
+  const auto measure = [](std::string name, double value, std::string unit, std::optional<double> threshold = {},
+                          std::string comparison = "") {
+    Measurement m{std::move(name), value, std::move(unit), threshold, std::move(comparison), true};
+    if (threshold) {
+      m.passed = m.comparison == "<=" ? value <= *threshold : m.comparison == ">=" ? value >= *threshold : value == *threshold;
+    }
+    return m;
+  };
+  const auto episodeOf = [&](int robot, int object, double from, double to) -> const HoldEpisode* {
+    for (const HoldEpisode& h : s.holds) {
+      if (h.robot == robot && h.object == object && h.grasp_time >= from - 1e-9 && h.grasp_time <= to + 1e-9) return &h;
+    }
+    return nullptr;
+  };
+  const auto insideRegion = [&](const core::Region& region, const Pose& X_WO, double& outside) {
+    // distance of the object's centre outside the region box (0 when inside)
+    const Eigen::Vector3d p = region.X_WR.inverse() * X_WO.translation();
+    const Eigen::Vector3d half = region.size / 2 + Eigen::Vector3d::Constant(checks.placement_tolerance);
+    const Eigen::Vector3d lo(-half.x(), -half.y(), -checks.placement_tolerance);
+    const Eigen::Vector3d hi(half.x(), half.y(), region.size.z() + checks.placement_tolerance);
+    outside = (p.cwiseMax(lo).cwiseMin(hi) - p).norm();
+    return outside <= 0.0;
+  };
+
+  for (const ActionTrack& a : s.actions) {
+    const core::PlanAction& action = *a.action;
+    ActionReport r;
+    r.id = State::actionId(action);
+    r.type = action.type;
+    r.robots.push_back(action.robot);
+    if (!action.receiver.empty()) r.robots.push_back(action.receiver);
+    r.object = action.object;
+    r.region = action.region;
+    r.planned_start = action.start;
+    r.planned_end = action.end;
+    std::vector<std::string> failures;
+    const std::string object = action.object;
+
+    switch (action.type) {
+      case ActionType::kPick: {
+        if (!a.command_time) {
+          failures.push_back("grasp: the plan does not close " + action.robot + "'s gripper during the pick");
+          break;
+        }
+        r.measurements.push_back(measure("both_pads_contact", a.both_pads_time ? 1.0 : 0.0, "bool", 1.0, "=="));
+        if (!a.both_pads_time) {
+          failures.push_back("grasp: after closing at " + fmt(*a.command_time) + " s the pads of " + action.robot +
+                             " never both touched " + object);
+          break;
+        }
+        r.observed_start = *a.both_pads_time;
+        const HoldEpisode* hold = episodeOf(a.robot, a.object, *a.command_time, action.end);
+        r.measurements.push_back(measure("held_at_end", a.held_at_end ? 1.0 : 0.0, "bool", 1.0, "=="));
+        r.measurements.push_back(measure("support_contact_at_end", a.support_contact_at_end ? 1.0 : 0.0, "bool", 0.0, "=="));
+        r.measurements.push_back(measure("lift_height", a.lift_height, "m", checks.lift_clearance, ">="));
+        if (!a.held_at_end) failures.push_back("grasp: " + object + " not held by both pads at the end of the pick");
+        if (a.support_contact_at_end) failures.push_back("lift: " + object + " still touches its support at " + fmt(action.end) + " s");
+        if (a.lift_height < checks.lift_clearance) {
+          failures.push_back("lift: " + object + " raised " + fmt(a.lift_height * 1e3) + " mm < " +
+                             fmt(checks.lift_clearance * 1e3) + " mm");
+        }
+        if (hold != nullptr) {
+          r.measurements.push_back(measure("slip", hold->max_slip, "m", checks.slip_tolerance, "<="));
+          r.measurements.push_back(measure("slip_angle", hold->max_slip_angle, "rad", checks.slip_angle_tolerance, "<="));
+          if (hold->max_slip > checks.slip_tolerance) {
+            failures.push_back("slip " + fmt(hold->max_slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+          }
+          if (hold->max_slip_angle > checks.slip_angle_tolerance) {
+            failures.push_back("slip angle " + fmt(hold->max_slip_angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+          }
+          if (a.held_at_end && !a.support_contact_at_end) r.observed_end = action.end;
+        }
+        break;
+      }
+      case ActionType::kHandoff: {
+        if (!a.command_time || !a.command2_time || *a.command2_time <= *a.command_time) {
+          failures.push_back("handoff: the plan must close " + action.receiver + "'s gripper before opening " +
+                             action.robot + "'s during the handoff");
+          break;
+        }
+        r.measurements.push_back(measure("overlap", a.overlap, "s", kMinHandoffOverlap, ">="));
+        r.measurements.push_back(measure("receiver_holds_at_end", a.held_at_end ? 1.0 : 0.0, "bool", 1.0, "=="));
+        r.measurements.push_back(measure("giver_touches_at_end", a.giver_touching_at_end ? 1.0 : 0.0, "bool", 0.0, "=="));
+        r.measurements.push_back(measure("foreign_contacts", static_cast<double>(a.foreign_contacts.size()), "count", 0.0, "=="));
+        if (a.overlap < kMinHandoffOverlap) {
+          failures.push_back("overlap: both grippers held " + object + " together for " + fmt(a.overlap) + " s < " +
+                             fmt(kMinHandoffOverlap) + " s");
+        }
+        if (!a.held_at_end) failures.push_back("transfer: " + action.receiver + " does not hold " + object + " at the end");
+        if (a.giver_touching_at_end) failures.push_back("transfer: " + action.robot + " still touches " + object + " at the end");
+        for (const std::string& name : a.foreign_contacts) failures.push_back("handoff: " + object + " touched " + name);
+        const HoldEpisode* hold = episodeOf(a.receiver, a.object, action.start, action.end);
+        if (hold != nullptr) {
+          r.observed_start = hold->grasp_time;
+          r.measurements.push_back(measure("receiver_slip", hold->max_slip, "m", checks.slip_tolerance, "<="));
+          r.measurements.push_back(measure("receiver_slip_angle", hold->max_slip_angle, "rad", checks.slip_angle_tolerance, "<="));
+          if (hold->max_slip > checks.slip_tolerance) {
+            failures.push_back("receiver slip " + fmt(hold->max_slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+          }
+        }
+        if (a.held_at_end) r.observed_end = *a.command2_time;
+        break;
+      }
+      case ActionType::kPlace: {
+        if (!a.command_time) {
+          failures.push_back("placement: the plan does not open " + action.robot + "'s gripper during the place");
+          break;
+        }
+        r.observed_start = *a.command_time;
+        if (a.region < 0) {
+          failures.push_back("placement: unknown region " + action.region);
+          break;
+        }
+        if (!a.placement_sampled) {
+          failures.push_back("placement: the run ended before the settle time after release");
+          break;
+        }
+        const core::Region& region = s.world.regions[a.region];
+        double outside = 0.0;
+        const bool inside = insideRegion(region, a.placement_pose, outside);
+        const double tilt = tiltFromFlat(a.placement_pose);
+        double final_outside = 0.0;
+        const bool stays = insideRegion(region, s.sim.objectPose(a.object), final_outside);
+        r.measurements.push_back(measure("distance_outside_region", outside, "m", 0.0, "<="));
+        r.measurements.push_back(measure("speed_after_settle", a.placement_speed, "m/s", checks.rest_speed, "<="));
+        r.measurements.push_back(measure("tilt", tilt, "rad", checks.upright_tolerance, "<="));
+        r.measurements.push_back(measure("distance_outside_region_at_end", final_outside, "m", 0.0, "<="));
+        if (!inside) failures.push_back("placement: " + object + " is " + fmt(outside * 1e3) + " mm outside " + region.name);
+        if (a.placement_speed > checks.rest_speed) {
+          failures.push_back("placement: " + object + " still moving at " + fmt(a.placement_speed) + " m/s > " +
+                             fmt(checks.rest_speed) + " m/s");
+        }
+        if (tilt > checks.upright_tolerance) {
+          failures.push_back("placement: " + object + " tilted " + fmt(tilt) + " rad > " + fmt(checks.upright_tolerance) + " rad");
+        }
+        if (inside && !stays) failures.push_back("placement: " + object + " left " + region.name + " before the end");
+        if (inside && a.placement_speed <= checks.rest_speed) r.observed_end = *a.placement_time;
+        break;
+      }
+    }
+    // drops and slips attributed to this action fail it too
+    for (const ExecutionEvent& event : s.events) {
+      if (event.action == r.id && (event.kind == "drop" || event.kind == "knocked object")) {
+        failures.push_back(event.kind + " at " + fmt(event.t) + " s: " + event.detail);
+      }
+    }
+    r.verdict = failures.empty() ? Verdict::kPassed : Verdict::kFailed;
+    for (std::size_t i = 0; i < failures.size(); ++i) r.failure += (i ? "; " : "") + failures[i];
+    report.actions.push_back(std::move(r));
+  }
+
+  // execution
+  std::vector<std::string> failures;
+  for (std::size_t r = 0; r < s.world.robots.size(); ++r) {
+    const TrackingStats& stats = executor.tracking(static_cast<int>(r));
+    RobotExecution execution;
+    execution.robot = s.world.robots[r].name;
+    execution.max_tracking_error = stats.max_tracking_error;
+    execution.torque_saturation = stats.steps > 0 ? static_cast<double>(stats.saturated_steps) / static_cast<double>(stats.steps) : 0.0;
+    execution.max_effort_ratio = stats.max_effort_ratio;
+    report.robots.push_back(execution);
+    if (stats.max_tracking_error > checks.tracking_error_limit) {
+      failures.push_back("tracking: " + execution.robot + " joint error " + fmt(stats.max_tracking_error) + " rad > " +
+                         fmt(checks.tracking_error_limit) + " rad");
+    }
+  }
+  for (const ExecutionEvent& event : s.events) {
+    if (event.kind == "slip") continue;  // judged by the grasp and handoff checks
+    failures.push_back(event.kind + " at " + fmt(event.t) + " s: " + event.detail);
+  }
+  std::sort(s.events.begin(), s.events.end(), [](const ExecutionEvent& x, const ExecutionEvent& y) { return x.t < y.t; });
+  report.events = s.events;
+  report.execution_verdict = failures.empty() ? Verdict::kPassed : Verdict::kFailed;
+  for (std::size_t i = 0; i < failures.size(); ++i) report.execution_failure += (i ? "; " : "") + failures[i];
+  return report;
+}
+
+}  // namespace dashbed::sim

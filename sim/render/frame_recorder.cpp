@@ -1,0 +1,71 @@
+#include "sim/render/frame_recorder.h"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "sim/render/scene_state.h"
+#include "sim/simulation.h"
+
+namespace dashbed::render {
+
+FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& robots, RecorderSettings settings)
+    : world_(world), settings_(std::move(settings)) {
+  if (!(settings_.fps > 0.0) || !std::isfinite(settings_.fps)) {
+    throw std::invalid_argument("RecorderSettings: fps must be positive (got " + std::to_string(settings_.fps) + ")");
+  }
+  camera_ = settings_.camera ? *settings_.camera
+                             : cameraPreset(world, settings_.camera_preset, settings_.width, settings_.height);
+  validateCamera(camera_);
+  if (settings_.out_dir) {
+    std::error_code ec;
+    std::filesystem::create_directories(*settings_.out_dir, ec);
+    if (ec || !std::filesystem::is_directory(*settings_.out_dir)) {
+      throw std::runtime_error(settings_.out_dir->string() + ": cannot create the frame folder" +
+                               (ec ? ": " + ec.message() : std::string()));
+    }
+  }
+  renderer_ = std::make_unique<SceneRenderer>(world, robots, settings_.render);
+  if (settings_.video) {
+    video_ = std::make_unique<VideoWriter>(*settings_.video, camera_.width, camera_.height, settings_.fps);
+  }
+}
+
+FrameRecorder::~FrameRecorder() = default;
+
+std::function<void(const sim::Simulation&, double)> FrameRecorder::hook() {
+  return [this](const sim::Simulation& simulation, double plan_time) { onStep(simulation, plan_time); };
+}
+
+void FrameRecorder::onStep(const sim::Simulation& simulation, double plan_time) {
+  // frame k belongs to plan time k / fps; the tolerance absorbs the rounding of summed steps
+  const auto due = [&](int k) { return k / settings_.fps <= plan_time + 1e-9; };
+  if (plan_time < 0.0 || !due(frames_)) return;
+
+  std::vector<Overlay> overlays;
+  if (settings_.show_time) {
+    char line[64];
+    std::snprintf(line, sizeof(line), "t = %.2f s", plan_time);
+    overlays.push_back(textOverlay(line));
+  }
+  if (settings_.overlays) {
+    std::vector<Overlay> extra = settings_.overlays(simulation, plan_time);
+    overlays.insert(overlays.end(), extra.begin(), extra.end());
+  }
+  last_frame_ = renderer_->render(captureScene(simulation), camera_, overlays);
+  while (due(frames_)) {
+    if (settings_.out_dir) {
+      char name[32];
+      std::snprintf(name, sizeof(name), "frame_%06d.png", frames_);
+      writePng(last_frame_, *settings_.out_dir / name);
+    }
+    if (video_) video_->add(last_frame_);
+    ++frames_;
+  }
+}
+
+void FrameRecorder::finish() {
+  if (video_) video_->finish();
+}
+
+}  // namespace dashbed::render

@@ -1,0 +1,42 @@
+#include "sim/run_plan.h"
+
+#include "sim/monitor.h"
+#include "sim/plan_executor.h"
+
+namespace dashbed::sim {
+
+void validatePlanForWorld(const core::Plan& plan, const core::World& world, const core::RobotSet& robots,
+                          const std::string& plan_file) {
+  if (robots.size() == 0) throw core::PlanError(plan_file + ": the world has no robots");
+  const core::RobotModel& model = *robots[0].model;
+  std::array<std::string, 6> names;
+  std::array<double, 6> lower{}, upper{}, velocity{};
+  for (int i = 0; i < 6; ++i) {
+    const core::JointModel& joint = model.joints()[model.movableJoints()[i]];
+    names[i] = joint.name;
+    lower[i] = joint.lower;
+    upper[i] = joint.upper;
+    velocity[i] = joint.max_velocity;
+  }
+  core::validatePlan(plan, world, names, lower, upper, velocity, plan_file);
+}
+
+Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
+               const std::string& plan_file, const RunOptions& options) {
+  Simulation sim(world, robots);
+  const double offset = world.physics.settle_time;
+  PlanExecutor executor(sim, plan, offset);
+  Monitor monitor(sim, plan, offset);
+  const double tail = options.tail_time >= 0.0 ? options.tail_time : world.checks.settle_time + 0.5;
+  const double end = plan.duration() + tail;
+  while (executor.planTime() < end) {
+    executor.step();
+    monitor.observe(executor);
+    if (options.on_step) options.on_step(sim, executor.planTime());
+  }
+  Report report = monitor.finish(executor);
+  report.plan_file = plan_file;
+  return report;
+}
+
+}  // namespace dashbed::sim

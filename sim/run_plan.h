@@ -1,0 +1,32 @@
+#pragma once
+// Executing a plan in simulation with the monitor: the `dashbed sim` job as a function.
+
+#include <functional>
+#include <string>
+
+#include "core/plan.h"
+#include "core/robot_set.h"
+#include "sim/report.h"
+#include "sim/simulation.h"
+
+namespace dashbed::sim {
+
+struct RunOptions {
+  /// Simulated time after the plan's end, so the last placement can settle and be judged [s].
+  /// Default: the world's checks.settle_time + 0.5 s.
+  double tail_time = -1.0;
+  /// Called after every step with the simulation and the plan time (renderers hook in here).
+  std::function<void(const Simulation&, double plan_time)> on_step;
+};
+
+/// core::validatePlan with the arm joint names, limits and speeds of the world's robot model.
+/// Throws core::PlanError.
+void validatePlanForWorld(const core::Plan& plan, const core::World& world, const core::RobotSet& robots,
+                          const std::string& plan_file);
+
+/// Builds a simulation of `world`, lets the objects settle for physics.settle_time with the
+/// robots holding still, executes the plan under the monitor and returns the report.
+Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
+               const std::string& plan_file, const RunOptions& options = {});
+
+}  // namespace dashbed::sim

@@ -1,0 +1,661 @@
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <memory>
+#include <numbers>
+#include <optional>
+#include <random>
+#include <string>
+#include <vector>
+
+#include <fcl/geometry/shape/box.h>
+#include <fcl/geometry/shape/cylinder.h>
+#include <fcl/geometry/shape/sphere.h>
+#include <fcl/narrowphase/collision.h>
+
+#include "core/grasps.h"
+#include "core/kinematics.h"
+#include "core/world_loader.h"
+#include "planner/collision_checker.h"
+
+using namespace dashbed;
+using core::Pose;
+using Eigen::Vector3d;
+using Eigen::VectorXd;
+using planner::CollisionChecker;
+using planner::CollisionScene;
+using planner::CollisionSettings;
+using planner::HeldObject;
+using planner::RestingObject;
+
+namespace {
+
+const core::LoadedWorld& sortingWorld() {
+  static const core::LoadedWorld loaded =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/default.yaml");
+  return loaded;
+}
+
+const CollisionScene& sortingScene() {
+  static const CollisionScene scene(*sortingWorld().world, *sortingWorld().robots);
+  return scene;
+}
+
+VectorXd fullQ(const core::ArmConfig& arm, double finger) {
+  VectorXd q(8);
+  for (int i = 0; i < 6; ++i) q[i] = arm[i];
+  q[6] = finger;
+  q[7] = finger;
+  return q;
+}
+
+VectorXd homeQ(const core::World& world, int robot, double finger = 0.025) {
+  return fullQ(world.robots[robot].home, finger);
+}
+
+Pose tcpDown(const Vector3d& p_WT) {
+  Pose X = Pose::Identity();
+  X.linear() = Eigen::Vector3d(1.0, -1.0, -1.0).asDiagonal();
+  X.translation() = p_WT;
+  return X;
+}
+
+core::ArmConfig solveNearHome(const core::PlacedRobot& robot, const Pose& X_WT) {
+  const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
+  REQUIRE_FALSE(solutions.empty());
+  return solutions.front();
+}
+
+/// The reference: every shape pair with plain fcl::collide, no prefilter, no broad phase.
+/// It builds its own geometry from the robot models (links' primitives grown by the margin as
+/// documented in collision_checker.h) and its own poses from core::linkPoses; it takes from
+/// the scene only the rules that are configuration: which self pairs are checked, which links
+/// are fixed and which hold objects.
+class BruteForce {
+ public:
+  BruteForce(const CollisionScene& scene, const core::World& world, const core::RobotSet& robots)
+      : scene_(scene), robots_(robots) {
+    const double margin = scene.settings().margin;
+    for (std::size_t r = 0; r < robots.size(); ++r) {
+      std::vector<LinkShape> shapes;
+      const auto& links = robots[r].model->links();
+      for (std::size_t l = 0; l < links.size(); ++l) {
+        for (const core::CollisionShape& shape : links[l].collisions) {
+          std::shared_ptr<fcl::CollisionGeometryd> geometry;
+          switch (shape.type) {
+            case core::ShapeType::kBox:
+              geometry = std::make_shared<fcl::Boxd>(shape.size + Vector3d::Constant(2 * margin));
+              break;
+            case core::ShapeType::kCylinder:
+              geometry = std::make_shared<fcl::Cylinderd>(shape.size.x() + margin, shape.size.z() + 2 * margin);
+              break;
+            case core::ShapeType::kSphere:
+              geometry = std::make_shared<fcl::Sphered>(shape.size.x() + margin);
+              break;
+          }
+          shapes.push_back({static_cast<int>(l), geometry, shape.X_LS});
+        }
+      }
+      shapes_.push_back(std::move(shapes));
+    }
+    for (const core::FixtureSpec& fixture : world.fixtures) {
+      for (const core::Box& box : fixture.boxes) statics_.push_back({std::make_shared<fcl::Boxd>(box.size), box.X_WB});
+    }
+    Pose X_WFloor = Pose::Identity();
+    X_WFloor.translation() = Vector3d(0, 0, -0.05);
+    statics_.push_back({std::make_shared<fcl::Boxd>(100.0, 100.0, 0.1), X_WFloor});
+    for (const core::ObjectSpec& object : world.objects) {
+      objects_.push_back(std::make_shared<fcl::Boxd>(object.size));
+      held_objects_.push_back(std::make_shared<fcl::Boxd>(object.size + Vector3d::Constant(2 * margin)));
+    }
+  }
+
+  bool robotFree(int r, const VectorXd& q, const std::vector<RestingObject>& objects,
+                 const std::optional<HeldObject>& held) const {
+    const std::vector<Placed> placed = place(r, q);
+    std::optional<Placed> held_placed;
+    if (held) held_placed = placeHeld(r, q, *held);
+    // static scene
+    for (const Placed& s : placed) {
+      if (!scene_.linkMoves(r, s.link)) continue;
+      for (const Static& box : statics_) {
+        if (collide(s.geometry.get(), s.X_W, box.geometry.get(), box.X_W)) return false;
+      }
+    }
+    if (held_placed && held->check_static) {
+      for (const Static& box : statics_) {
+        if (collide(held_placed->geometry.get(), held_placed->X_W, box.geometry.get(), box.X_W)) return false;
+      }
+    }
+    // self
+    for (std::size_t i = 0; i < placed.size(); ++i) {
+      for (std::size_t j = i + 1; j < placed.size(); ++j) {
+        if (placed[i].link == placed[j].link || !scene_.selfPairChecked(r, placed[i].link, placed[j].link)) continue;
+        if (collide(placed[i].geometry.get(), placed[i].X_W, placed[j].geometry.get(), placed[j].X_W)) return false;
+      }
+    }
+    if (held_placed) {
+      for (const Placed& s : placed) {
+        if (scene_.linkHoldsObjects(r, s.link)) continue;
+        if (collide(s.geometry.get(), s.X_W, held_placed->geometry.get(), held_placed->X_W)) return false;
+      }
+    }
+    // resting objects
+    for (const RestingObject& o : objects) {
+      if (held && o.object == held->object) continue;
+      for (const Placed& s : placed) {
+        if (collide(s.geometry.get(), s.X_W, objects_[o.object].get(), o.X_WO)) return false;
+      }
+      if (held_placed && collide(held_placed->geometry.get(), held_placed->X_W, objects_[o.object].get(), o.X_WO)) {
+        return false;
+      }
+    }
+    return true;
+  }
+
+  bool robotsFree(int ra, const VectorXd& qa, const std::optional<HeldObject>& held_a, int rb, const VectorXd& qb,
+                  const std::optional<HeldObject>& held_b) const {
+    const std::vector<Placed> a = place(ra, qa);
+    const std::vector<Placed> b = place(rb, qb);
+    const bool shared = held_a && held_b && held_a->object == held_b->object;
+    for (const Placed& sa : a) {
+      for (const Placed& sb : b) {
+        if (!scene_.linkMoves(ra, sa.link) && !scene_.linkMoves(rb, sb.link)) continue;
+        if (collide(sa.geometry.get(), sa.X_W, sb.geometry.get(), sb.X_W)) return false;
+      }
+    }
+    if (held_a) {
+      const Placed h = placeHeld(ra, qa, *held_a);
+      for (const Placed& sb : b) {
+        if (shared && scene_.linkHoldsObjects(rb, sb.link)) continue;
+        if (collide(h.geometry.get(), h.X_W, sb.geometry.get(), sb.X_W)) return false;
+      }
+      if (held_b && !shared) {
+        const Placed hb = placeHeld(rb, qb, *held_b);
+        if (collide(h.geometry.get(), h.X_W, hb.geometry.get(), hb.X_W)) return false;
+      }
+    }
+    if (held_b) {
+      const Placed h = placeHeld(rb, qb, *held_b);
+      for (const Placed& sa : a) {
+        if (shared && scene_.linkHoldsObjects(ra, sa.link)) continue;
+        if (collide(h.geometry.get(), h.X_W, sa.geometry.get(), sa.X_W)) return false;
+      }
+    }
+    return true;
+  }
+
+ private:
+  struct LinkShape {
+    int link;
+    std::shared_ptr<fcl::CollisionGeometryd> geometry;
+    Pose X_LS;
+  };
+  struct Placed {
+    int link;
+    std::shared_ptr<fcl::CollisionGeometryd> geometry;
+    Pose X_W;
+  };
+  struct Static {
+    std::shared_ptr<fcl::CollisionGeometryd> geometry;
+    Pose X_W;
+  };
+
+  static bool collide(const fcl::CollisionGeometryd* a, const Pose& X_a, const fcl::CollisionGeometryd* b,
+                      const Pose& X_b) {
+    fcl::CollisionRequestd request;
+    fcl::CollisionResultd result;
+    fcl::collide(a, X_a, b, X_b, request, result);
+    return result.isCollision();
+  }
+
+  std::vector<Placed> place(int r, const VectorXd& q) const {
+    const std::vector<Pose> X_RL = core::linkPoses(*robots_[r].model, q);
+    const Pose& X_WR = robots_[r].spec->X_WBase;
+    std::vector<Placed> placed;
+    for (const LinkShape& s : shapes_[r]) placed.push_back({s.link, s.geometry, X_WR * X_RL[s.link] * s.X_LS});
+    return placed;
+  }
+
+  Placed placeHeld(int r, const VectorXd& q, const HeldObject& held) const {
+    const std::vector<Pose> X_RL = core::linkPoses(*robots_[r].model, q);
+    const Pose X_WT = robots_[r].spec->X_WBase * X_RL[scene_.tcpLink(r)];
+    return {-1, held_objects_[held.object], X_WT * held.X_TO};
+  }
+
+  const CollisionScene& scene_;
+  const core::RobotSet& robots_;
+  std::vector<std::vector<LinkShape>> shapes_;
+  std::vector<Static> statics_;
+  std::vector<std::shared_ptr<fcl::CollisionGeometryd>> objects_;
+  std::vector<std::shared_ptr<fcl::CollisionGeometryd>> held_objects_;
+};
+
+/// Seeded random queries over the sorting world.
+class RandomQueries {
+ public:
+  explicit RandomQueries(std::uint64_t seed) : rng_(seed) {}
+
+  /// Mostly above the table (shoulder lift in [-pi, 0]), sometimes anywhere within the limits.
+  VectorXd configuration(const core::RobotModel& model) {
+    VectorXd q(model.numPositions());
+    const bool anywhere = uniform(0, 1) < 0.3;
+    for (int j : model.movableJoints()) {
+      const core::JointModel& joint = model.joints()[j];
+      double lo = joint.lower;
+      double hi = joint.upper;
+      if (!anywhere && joint.type == core::JointType::kRevolute) {
+        lo = std::max(lo, -std::numbers::pi);
+        hi = std::min(hi, std::numbers::pi);
+        if (joint.q_index == 1) hi = 0.0;
+      }
+      q[joint.q_index] = uniform(lo, hi);
+    }
+    return q;
+  }
+
+  /// Often a configuration reaching over the table centre (IK of a random TCP pose there,
+  /// a random solution), else configuration(model).
+  VectorXd towardsCentre(const core::PlacedRobot& robot) {
+    if (uniform(0, 1) < 0.9) {
+      Pose X_WT = Pose::Identity();
+      X_WT.linear() = Eigen::Quaterniond(Eigen::Vector4d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)))
+                          .normalized()
+                          .toRotationMatrix();
+      X_WT.translation() = Vector3d(uniform(-0.12, 0.12), uniform(-0.15, 0.15), uniform(0.8, 1.05));
+      const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
+      if (!solutions.empty()) {
+        const auto& arm = solutions[static_cast<std::size_t>(uniform(0, static_cast<double>(solutions.size()) - 1e-9))];
+        VectorXd q(robot.model->numPositions());
+        for (int i = 0; i < 6; ++i) q[i] = arm[i];
+        for (int i = 6; i < q.size(); ++i) q[i] = uniform(0.0, 0.025);
+        return q;
+      }
+    }
+    return configuration(*robot.model);
+  }
+
+  std::optional<HeldObject> held(const core::World& world, double probability) {
+    if (uniform(0, 1) >= probability) return std::nullopt;
+    const int object = static_cast<int>(uniform(0, static_cast<double>(world.objects.size()) - 1e-9));
+    const auto grasps = core::boxGrasps(world.objects[object].size);
+    const auto& grasp = grasps[static_cast<std::size_t>(uniform(0, static_cast<double>(grasps.size()) - 1e-9))];
+    return HeldObject{object, grasp.X_OT.inverse(), uniform(0, 1) < 0.8};
+  }
+
+  /// The start placement, or the objects scattered around points of the robot.
+  std::vector<RestingObject> objects(const core::World& world, const std::vector<Vector3d>& near_points) {
+    std::vector<RestingObject> placement = planner::startPlacement(world);
+    if (uniform(0, 1) < 0.3) return placement;
+    for (RestingObject& o : placement) {
+      if (uniform(0, 1) < 0.3) continue;
+      const Vector3d& centre =
+          near_points[static_cast<std::size_t>(uniform(0, static_cast<double>(near_points.size()) - 1e-9))];
+      Pose X = Pose::Identity();
+      X.linear() = Eigen::Quaterniond(Eigen::Vector4d(uniform(-1, 1), uniform(-1, 1), uniform(-1, 1), uniform(-1, 1)))
+                       .normalized()
+                       .toRotationMatrix();
+      X.translation() = centre + Vector3d(uniform(-0.12, 0.12), uniform(-0.12, 0.12), uniform(-0.12, 0.12));
+      o.X_WO = X;
+    }
+    return placement;
+  }
+
+  double uniform(double lo, double hi) { return std::uniform_real_distribution<double>(lo, hi)(rng_); }
+
+ private:
+  std::mt19937_64 rng_;
+};
+
+std::vector<Vector3d> linkOrigins(const core::PlacedRobot& robot, const VectorXd& q) {
+  std::vector<Vector3d> points;
+  for (const Pose& X_RL : core::linkPoses(*robot.model, q)) points.push_back(robot.spec->X_WBase * X_RL.translation());
+  return points;
+}
+
+}  // namespace
+
+TEST_CASE("Collision settings and queries reject bad input with a message", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  CollisionSettings settings;
+  settings.margin = -0.001;
+  CHECK_THROWS_WITH(settings.validate(), Catch::Contains("margin"));
+  settings = {};
+  settings.motion_step = 0.0;
+  CHECK_THROWS_WITH(CollisionScene(*loaded.world, *loaded.robots, settings), Catch::Contains("motion_step"));
+
+  CollisionChecker dut(sortingScene());
+  const auto objects = planner::startPlacement(*loaded.world);
+  const VectorXd home = homeQ(*loaded.world, 0);
+  CHECK_THROWS_WITH(dut.robotFree(2, home, objects), Catch::Contains("robot index 2"));
+  CHECK_THROWS_WITH(dut.robotFree(0, VectorXd::Zero(6), objects), Catch::Contains("expects 8"));
+  CHECK_THROWS_WITH(dut.robotFree(0, home, objects, HeldObject{7, Pose::Identity()}),
+                    Catch::Contains("held object index 7"));
+  const std::vector<RestingObject> bad_objects{{-1, Pose::Identity()}};
+  CHECK_THROWS_WITH(dut.robotFree(0, home, bad_objects), Catch::Contains("resting object index -1"));
+  VectorXd nan_q = home;
+  nan_q[2] = std::nan("");
+  CHECK_THROWS_WITH(dut.robotFree(0, nan_q, objects), Catch::Contains("not finite"));
+  CHECK_THROWS_WITH(dut.robotsFree(0, home, std::nullopt, 0, home, std::nullopt),
+                    Catch::Contains("two different robots"));
+  planner::TimedPath bad{{0.0, 0.0}, {home, home}};
+  CHECK_THROWS_WITH(dut.timedPathsFree(0, bad, std::nullopt, 1, bad, std::nullopt), Catch::Contains("increase"));
+}
+
+TEST_CASE("Self-collision pairs ignore adjacent bodies and the two fingers and check the rest",
+          "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const CollisionScene& dut = sortingScene();
+  const core::RobotModel& model = *(*loaded.robots)[0].model;
+  const auto link = [&](const char* name) { return model.requireLink(name); };
+  // same rigid body or joined by one joint
+  CHECK_FALSE(dut.selfPairChecked(0, link("wrist_3_link"), link("hande_coupling")));
+  CHECK_FALSE(dut.selfPairChecked(0, link("hande_base"), link("hande_left_finger")));
+  CHECK_FALSE(dut.selfPairChecked(0, link("forearm_link"), link("wrist_1_link")));
+  CHECK_FALSE(dut.selfPairChecked(0, link("upper_arm_link"), link("forearm_link")));
+  // the pads touch when the gripper is closed
+  CHECK_FALSE(dut.selfPairChecked(0, link("hande_left_finger"), link("hande_right_finger")));
+  // the gripper can hit the upper arm, the shoulder and the base
+  CHECK(dut.selfPairChecked(0, link("hande_base"), link("upper_arm_link")));
+  CHECK(dut.selfPairChecked(0, link("hande_left_finger"), link("upper_arm_link")));
+  CHECK(dut.selfPairChecked(0, link("hande_base"), link("shoulder_link")));
+  CHECK(dut.selfPairChecked(0, link("hande_base"), link("base_link_inertia")));
+  CHECK(dut.selfPairChecked(0, link("wrist_2_link"), link("upper_arm_link")));
+  bool fingers_listed = false;
+  for (const auto& pair : dut.ignoredSelfPairs(0)) {
+    if (pair.body_a == "hande_left_finger" && pair.body_b == "hande_right_finger") fingers_listed = pair.reason == "home";
+  }
+  CHECK(fingers_listed);
+  // the base never moves and is not checked against the table it stands on
+  CHECK_FALSE(dut.linkMoves(0, link("base_link_inertia")));
+  CHECK(dut.linkMoves(0, link("shoulder_link")));
+  CHECK(dut.linkHoldsObjects(0, link("hande_right_finger")));
+  CHECK_FALSE(dut.linkHoldsObjects(0, link("hande_base")));
+}
+
+TEST_CASE("robotFree agrees with a brute-force FCL check on random configurations", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const CollisionScene& scene = sortingScene();
+  const BruteForce reference(scene, world, *loaded.robots);
+  CollisionChecker dut(scene);
+  RandomQueries random(20240501);
+  constexpr int kSamples = 4000;
+  int free = 0;
+  int mismatches = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const int r = i % 2;
+    const core::PlacedRobot& robot = (*loaded.robots)[r];
+    const VectorXd q = random.configuration(*robot.model);
+    const auto held = random.held(world, 0.4);
+    const auto objects = random.objects(world, linkOrigins(robot, q));
+    const bool expected = reference.robotFree(r, q, objects, held);
+    const bool actual = dut.robotFree(r, q, objects, held);
+    if (expected != actual) {
+      ++mismatches;
+      UNSCOPED_INFO("sample " << i << " robot " << r << " q " << q.transpose() << " expected " << expected);
+    }
+    free += expected ? 1 : 0;
+  }
+  CHECK(mismatches == 0);
+  // both outcomes are well represented
+  CHECK(free > kSamples / 10);
+  CHECK(free < kSamples * 9 / 10);
+}
+
+TEST_CASE("robotFree agrees with brute force on the static scene and self-collision alone", "[planner][collision]") {
+  // without objects and held objects, the cross-check exercises the broad phase over the
+  // fixtures and the self pairs only, over the full joint ranges
+  const auto& loaded = sortingWorld();
+  const CollisionScene& scene = sortingScene();
+  const BruteForce reference(scene, *loaded.world, *loaded.robots);
+  CollisionChecker dut(scene);
+  RandomQueries random(7);
+  int mismatches = 0;
+  int free = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const int r = i % 2;
+    const VectorXd q = random.configuration(*(*loaded.robots)[r].model);
+    const bool expected = reference.robotFree(r, q, {}, std::nullopt);
+    mismatches += expected != dut.robotFree(r, q, {}, std::nullopt) ? 1 : 0;
+    free += expected ? 1 : 0;
+  }
+  CHECK(mismatches == 0);
+  CHECK(free > 300);
+}
+
+TEST_CASE("robotsFree agrees with a brute-force FCL check on random configuration pairs", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const CollisionScene& scene = sortingScene();
+  const BruteForce reference(scene, world, *loaded.robots);
+  CollisionChecker dut(scene);
+  RandomQueries random(99);
+  constexpr int kSamples = 4000;
+  int free = 0;
+  int mismatches = 0;
+  for (int i = 0; i < kSamples; ++i) {
+    const VectorXd q0 = random.towardsCentre((*loaded.robots)[0]);
+    const VectorXd q1 = random.towardsCentre((*loaded.robots)[1]);
+    auto held0 = random.held(world, 0.4);
+    auto held1 = random.held(world, 0.4);
+    // now and then both hold the same object, as in a handoff
+    if (held0 && held1 && random.uniform(0, 1) < 0.3) held1->object = held0->object;
+    const bool expected = reference.robotsFree(0, q0, held0, 1, q1, held1);
+    if (expected != dut.robotsFree(0, q0, held0, 1, q1, held1)) {
+      ++mismatches;
+      UNSCOPED_INFO("sample " << i << " q0 " << q0.transpose() << " q1 " << q1.transpose());
+    }
+    // the order of the robots does not matter
+    if (expected != dut.robotsFree(1, q1, held1, 0, q0, held0)) ++mismatches;
+    free += expected ? 1 : 0;
+  }
+  CHECK(mismatches == 0);
+  CHECK(free > kSamples / 10);
+  CHECK(free < kSamples * 9 / 10);
+}
+
+TEST_CASE("Known configurations of the sorting world", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const core::RobotSet& robots = *loaded.robots;
+  CollisionChecker dut(sortingScene());
+  const auto objects = planner::startPlacement(world);
+
+  SECTION("home is free, alone and together") {
+    for (int r = 0; r < 2; ++r) {
+      CHECK(dut.robotFree(r, homeQ(world, r, 0.025), objects));
+      CHECK(dut.robotFree(r, homeQ(world, r, 0.0), objects));
+    }
+    CHECK(dut.robotsFree(0, homeQ(world, 0), std::nullopt, 1, homeQ(world, 1), std::nullopt));
+  }
+
+  SECTION("the arm driven into the table collides") {
+    VectorXd q = homeQ(world, 0);
+    q[1] = 0.3;  // shoulder lift below horizontal: the arm points into the table
+    CHECK_FALSE(dut.robotFree(0, q, {}));
+  }
+
+  SECTION("open fingers around a resting cube are free, closed fingers collide") {
+    const int cube = 3;  // in front of r0
+    const Pose X_WO = world.objects[cube].X_WO;
+    const auto grasps = core::boxGrasps(world.objects[cube].size);
+    REQUIRE(grasps.front().approach == core::GraspApproach::kTop);
+    const core::ArmConfig arm = solveNearHome(robots[0], X_WO * grasps.front().X_OT);
+    CHECK(dut.robotFree(0, fullQ(arm, 0.025), objects));
+    CHECK_FALSE(dut.robotFree(0, fullQ(arm, 0.0), objects));
+    // during the pick the planner leaves the grasped cube out of the resting objects
+    std::vector<RestingObject> others;
+    for (const RestingObject& o : objects) {
+      if (o.object != cube) others.push_back(o);
+    }
+    CHECK(dut.robotFree(0, fullQ(arm, 0.0), others));
+  }
+
+  SECTION("a held object hitting a fixture collides") {
+    const int cube = 3;
+    const auto grasps = core::boxGrasps(world.objects[cube].size);
+    const Pose X_TO = grasps.front().X_OT.inverse();
+    // at the grasp the (grown) cube reaches into the table; the gripper alone is clear of it
+    const core::ArmConfig at_grasp = solveNearHome(robots[0], world.objects[cube].X_WO * grasps.front().X_OT);
+    const VectorXd q = fullQ(at_grasp, 0.02);
+    CHECK(dut.robotFree(0, q, {}));
+    CHECK_FALSE(dut.robotFree(0, q, {}, HeldObject{cube, X_TO, true}));
+    CHECK(dut.robotFree(0, q, {}, HeldObject{cube, X_TO, false}));  // still on its support
+    // lifted 5 cm it is free; pushed sideways into a bin wall it is not
+    Pose X_WT = world.objects[cube].X_WO * grasps.front().X_OT;
+    X_WT.translation().z() += 0.05;
+    CHECK(dut.robotFree(0, fullQ(solveNearHome(robots[0], X_WT), 0.02), {}, HeldObject{cube, X_TO, true}));
+    // over a bin wall the gripper clears it by 3 mm, the held cube dips 2 mm into it
+    const core::Box& bin_wall = world.findFixture("bin_blue")->boxes.at(1);
+    const double wall_top = bin_wall.X_WB.translation().z() + bin_wall.size.z() / 2;
+    const Vector3d p_over_wall(bin_wall.X_WB.translation().x(), bin_wall.X_WB.translation().y(), wall_top + 0.018);
+    const VectorXd q_wall = fullQ(solveNearHome(robots[0], tcpDown(p_over_wall)), 0.025);
+    CHECK(dut.robotFree(0, q_wall, {}));
+    CHECK_FALSE(dut.robotFree(0, q_wall, {}, HeldObject{cube, Pose::Identity(), true}));
+  }
+
+  SECTION("a held object is part of its robot against the other robot") {
+    const Pose X_WT0 = tcpDown({-0.12, 0.0, 0.95});
+    const Pose X_WT1 = tcpDown({0.12, 0.0, 0.95});
+    const VectorXd q0 = fullQ(solveNearHome(robots[0], X_WT0), 0.025);
+    const VectorXd q1 = fullQ(solveNearHome(robots[1], X_WT1), 0.025);
+    CHECK(dut.robotsFree(0, q0, std::nullopt, 1, q1, std::nullopt));
+    // a cube held 19 cm to the side of r0's TCP reaches into r1's finger
+    Pose X_TO = Pose::Identity();
+    X_TO.translation() = Vector3d(0.19, 0.0, 0.0);
+    const HeldObject held0{0, X_TO, true};
+    CHECK(dut.robotFree(0, q0, {}, held0));
+    CHECK_FALSE(dut.robotsFree(0, q0, held0, 1, q1, std::nullopt));
+    CHECK_FALSE(dut.robotsFree(1, q1, std::nullopt, 0, q0, held0));
+    // once r1 holds it too (a handoff) it may touch r1's fingers
+    const HeldObject held1{0, X_WT1.inverse() * X_WT0 * X_TO, true};
+    CHECK(dut.robotsFree(0, q0, held0, 1, q1, held1));
+  }
+}
+
+TEST_CASE("Motion steps bound every point's travel by the motion step", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const CollisionScene& dut = sortingScene();
+  const core::PlacedRobot& robot = (*loaded.robots)[0];
+  const double step = dut.settings().motion_step;
+  CHECK(dut.settings().motionChecksConservative());
+  RandomQueries random(3);
+  for (int trial = 0; trial < 30; ++trial) {
+    const VectorXd a = random.configuration(*robot.model);
+    VectorXd b = a;
+    for (int i = 0; i < 8; ++i) b[i] += random.uniform(-0.5, 0.5) * (i < 6 ? 1.0 : 0.05);
+    const auto held = random.held(world, 0.5);
+    const int n = dut.motionSteps(0, a, b, held);
+    REQUIRE(n >= 1);
+    // points: the corners of every link shape's bounding box and of the held object
+    double worst = 0.0;
+    std::vector<Vector3d> previous;
+    for (int i = 0; i <= n; ++i) {
+      const VectorXd q = a + (static_cast<double>(i) / n) * (b - a);
+      const std::vector<Pose> X_RL = core::linkPoses(*robot.model, q);
+      std::vector<Vector3d> points;
+      const auto corners = [&](const Pose& X, const Vector3d& half) {
+        for (int c = 0; c < 8; ++c) {
+          points.push_back(X * Vector3d((c & 1) ? half.x() : -half.x(), (c & 2) ? half.y() : -half.y(),
+                                        (c & 4) ? half.z() : -half.z()));
+        }
+      };
+      const auto& links = robot.model->links();
+      for (std::size_t l = 0; l < links.size(); ++l) {
+        for (const auto& shape : links[l].collisions) {
+          const Vector3d half = shape.type == core::ShapeType::kBox ? Vector3d(shape.size / 2)
+                                                                    : Vector3d(shape.size.x(), shape.size.x(), shape.size.z() / 2);
+          corners(X_RL[l] * shape.X_LS, half);
+        }
+      }
+      if (held) corners(X_RL[dut.tcpLink(0)] * held->X_TO, world.objects[held->object].size / 2);
+      if (!previous.empty()) {
+        for (std::size_t p = 0; p < points.size(); ++p) worst = std::max(worst, (points[p] - previous[p]).norm());
+      }
+      previous = points;
+    }
+    CHECK(worst <= step + 1e-12);
+    // and the bound is not wildly loose
+    CHECK(worst > step / 20);
+  }
+  // the travel radius of the base joint covers the stretched-out arm and gripper (~1 m)
+  CHECK(dut.jointTravelRadius(0, 0) > 0.95);
+  CHECK(dut.jointTravelRadius(0, 0) < 1.3);
+  CHECK(dut.jointTravelRadius(0, 6) == 1.0);
+}
+
+TEST_CASE("motionFree detects a thin obstacle crossed mid-motion", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  core::World world = *loaded.world;
+  // a 1 cm x 1 mm x 1 cm plate that only the tip of the left finger passes through, about
+  // halfway through a 1.75 rad turn of the base
+  const core::ArmConfig mid = solveNearHome((*loaded.robots)[0], tcpDown({-0.30, 0.0, 0.95}));
+  core::ArmConfig from = mid;
+  core::ArmConfig to = mid;
+  from[0] -= 1.0;
+  to[0] += 0.75;
+  core::FixtureSpec plate;
+  plate.name = "plate";
+  plate.type = core::FixtureType::kBox;
+  plate.X_WF = Pose::Identity();
+  plate.X_WF.translation() = Vector3d(-0.30 + 0.035, 0.0, 0.935);
+  plate.size = Vector3d(0.01, 0.001, 0.01);
+  world.fixtures.push_back(plate);
+  core::deriveFixtureGeometry(world);
+  const core::RobotSet robots(world);
+  const CollisionScene scene(world, robots);
+  CollisionChecker dut(scene);
+
+  const VectorXd q_from = fullQ(from, 0.025);
+  const VectorXd q_to = fullQ(to, 0.025);
+  const VectorXd q_mid = fullQ(mid, 0.025);
+  REQUIRE(dut.robotFree(0, q_from, {}));
+  REQUIRE(dut.robotFree(0, q_to, {}));
+  REQUIRE_FALSE(dut.robotFree(0, q_mid, {}));
+  CHECK_FALSE(dut.motionFree(0, q_from, q_to, {}));
+  CHECK_FALSE(dut.motionFree(0, q_to, q_from, {}));
+  // ten evenly spaced samples would have missed it
+  bool coarse_hit = false;
+  for (int i = 0; i <= 10; ++i) coarse_hit |= !dut.robotFree(0, q_from + (i / 10.0) * (q_to - q_from), {});
+  CHECK_FALSE(coarse_hit);
+  // a motion that stays on one side of the plate is free
+  core::ArmConfig side = from;
+  side[0] += 0.6;
+  CHECK(dut.motionFree(0, q_from, fullQ(side, 0.025), {}));
+  // without the plate the whole motion is free
+  CollisionChecker plain(sortingScene());
+  CHECK(plain.motionFree(0, q_from, q_to, {}));
+}
+
+TEST_CASE("timedPathsFree checks two robots at common times", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const core::RobotSet& robots = *loaded.robots;
+  CollisionChecker dut(sortingScene());
+  // r0 sweeps its gripper across the table centre; r1 reaches to the centre
+  const core::ArmConfig centre0 = solveNearHome(robots[0], tcpDown({-0.035, 0.0, 0.95}));
+  core::ArmConfig left = centre0;
+  core::ArmConfig right = centre0;
+  left[0] -= 0.8;
+  right[0] += 0.8;
+  const VectorXd sweep_from = fullQ(left, 0.025);
+  const VectorXd sweep_to = fullQ(right, 0.025);
+  const VectorXd reach1 = fullQ(solveNearHome(robots[1], tcpDown({0.035, 0.0, 0.95})), 0.025);
+  const VectorXd home1 = homeQ(world, 1);
+  REQUIRE_FALSE(dut.robotsFree(0, fullQ(centre0, 0.025), std::nullopt, 1, reach1, std::nullopt));
+  REQUIRE(dut.robotsFree(0, sweep_from, std::nullopt, 1, reach1, std::nullopt));
+  REQUIRE(dut.robotsFree(0, sweep_to, std::nullopt, 1, reach1, std::nullopt));
+
+  // r1 waits at the centre while r0 sweeps through it
+  CHECK_FALSE(dut.motionsFree(0, sweep_from, sweep_to, std::nullopt, 1, reach1, reach1, std::nullopt));
+  const planner::TimedPath sweep{{0.0, 1.0}, {sweep_from, sweep_to}};
+  CHECK_FALSE(dut.timedPathsFree(0, sweep, std::nullopt, 1, {{0.0}, {reach1}}, std::nullopt));
+  // r1 goes to the centre only after r0 has passed
+  const planner::TimedPath after{{0.0, 1.0, 2.0}, {home1, home1, reach1}};
+  CHECK(dut.timedPathsFree(0, sweep, std::nullopt, 1, after, std::nullopt));
+  // ... but not if it leaves too early
+  const planner::TimedPath early{{0.0, 0.5}, {home1, reach1}};
+  CHECK_FALSE(dut.timedPathsFree(0, sweep, std::nullopt, 1, early, std::nullopt));
+}

@@ -1,0 +1,25 @@
+#pragma once
+// Report output shared by the commands that simulate (sim, run): the summary on stdout and
+// the optional JSON / JUnit files.
+
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "sim/report.h"
+
+namespace dashbed::tools {
+
+struct ReportOutputs {
+  std::string json_file;   ///< --report
+  std::string junit_file;  ///< --junit
+  bool quiet = false;      ///< --quiet: no per-action lines
+};
+
+void addReportOptions(CLI::App& command, ReportOutputs& outputs);
+
+/// Prints the summary (one line per action, then the verdict) and writes the files asked for.
+/// Throws std::runtime_error when a file cannot be written.
+void writeReportOutputs(const sim::Report& report, const ReportOutputs& outputs);
+
+}  // namespace dashbed::tools
