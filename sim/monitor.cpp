@@ -1,6 +1,7 @@
 #include "sim/monitor.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -25,6 +26,12 @@ constexpr double kMinHandoffOverlap = 0.05;  // [s]
 // Displacement of an object at rest that counts as knocking it.
 constexpr double kKnockDistance = 0.005;  // [m]
 constexpr double kKnockAngle = 0.1;       // [rad]
+// An unplanned contact that pauses for less than this is the same contact.
+constexpr double kContactGap = 0.25;  // [s]
+// After a robot opens its gripper its fingers may still brush the object it let go of.
+constexpr double kReleaseGrace = 0.5;  // [s]
+// A released object counts as settled after resting this long.
+constexpr double kSettledAfter = 0.3;  // [s]
 
 std::string fmt(double value, int precision = 4) {
   std::ostringstream out;
@@ -51,9 +58,19 @@ struct HoldEpisode {
   std::optional<double> release_time;
   bool reference_set = false;
   Pose X_TO_reference = Pose::Identity();
-  double max_slip = 0.0;
-  double max_slip_angle = 0.0;
   double slip_time = -1.0;  // when slip first exceeded the tolerance
+  std::vector<std::array<double, 3>> slip_samples;  // (t, slip [m], slip angle [rad]) every step
+
+  /// Largest slip and slip angle over plan times [from, to].
+  std::pair<double, double> maxSlip(double from, double to) const {
+    double slip = 0.0, angle = 0.0;
+    for (const auto& sample : slip_samples) {
+      if (sample[0] < from - 1e-9 || sample[0] > to + 1e-9) continue;
+      slip = std::max(slip, sample[1]);
+      angle = std::max(angle, sample[2]);
+    }
+    return {slip, angle};
+  }
   std::optional<double> lost_since;
   std::optional<double> drop_time;
 };
@@ -98,9 +115,10 @@ struct Monitor::State {
   std::vector<Pose> rest_pose;                  // per object
   std::vector<bool> knocked;                    // per object: currently displaced from rest
   std::vector<bool> settling;                   // per object: manipulated, or released and not yet at rest
+  std::vector<std::optional<double>> rest_since;  // per settling object: since when it is at rest
   std::vector<int> last_toucher;                // per object: robot that touched it last
   std::vector<double> start_z;                  // per object
-  std::set<std::string> touching_pairs;         // unplanned pairs touching in the last step
+  std::map<std::string, double> last_touch;     // unplanned pair -> plan time it last touched
   std::vector<ExecutionEvent> events;
 
   State(const Simulation& s, const core::Plan& p, double o) : sim(s), plan(p), offset(o), world(s.world()) {}
@@ -169,6 +187,26 @@ struct Monitor::State {
     events.push_back(std::move(event));
   }
 
+  /// True when robot r let go of object o less than kReleaseGrace ago.
+  bool releasedRecently(int r, int o, double t) const {
+    for (auto it = holds.rbegin(); it != holds.rend(); ++it) {
+      if (it->robot != r || it->object != o) continue;
+      return it->release_time && t - *it->release_time < kReleaseGrace;
+    }
+    return false;
+  }
+
+  /// True when robot r opening its gripper on object o at time t is part of a plan action:
+  /// a place by r or a handoff given by r in progress.
+  bool releaseIsPlanned(int r, int o, double t) const {
+    for (const ActionTrack& a : actions) {
+      if (a.object != o || a.robot != r) continue;
+      if (a.action->type == ActionType::kPick) continue;
+      if (t >= a.action->start - 1e-9 && t <= a.action->end + 1e-9) return true;
+    }
+    return false;
+  }
+
   static std::string actionId(const core::PlanAction& a) {
     switch (a.type) {
       case ActionType::kPick: return "pick " + a.object + " by " + a.robot;
@@ -194,6 +232,7 @@ Monitor::Monitor(const Simulation& sim, const core::Plan& plan, double plan_time
   }
   s.knocked.assign(s.world.objects.size(), false);
   s.settling.assign(s.world.objects.size(), false);
+  s.rest_since.assign(s.world.objects.size(), std::nullopt);
   s.last_toucher.assign(s.world.objects.size(), -1);
   for (const core::PlanAction& action : plan.actions) {
     ActionTrack track;
@@ -251,7 +290,8 @@ void Monitor::observe(const PlanExecutor& executor) {
         if (b.link == s.left_finger[b.index]) left[b.index].insert(a.index);
         if (b.link == s.right_finger[b.index]) right[b.index].insert(a.index);
         const bool planned = s.isFinger(b) && (s.inActionWith(b.index, a.index, t) ||
-                                               (s.active_hold[b.index] >= 0 && s.holds[s.active_hold[b.index]].object == a.index));
+                                               (s.active_hold[b.index] >= 0 && s.holds[s.active_hold[b.index]].object == a.index) ||
+                                               s.releasedRecently(b.index, a.index, t));
         if (!planned) unplanned_now.insert(s.bodyName(b) + " touches " + s.bodyName(a));
       } else {
         support[a.index] = true;
@@ -267,9 +307,13 @@ void Monitor::observe(const PlanExecutor& executor) {
       }
     }
   }
-  // an unplanned pair is reported when it starts touching
+  // an unplanned pair is reported when it starts touching after a while apart (contacts
+  // chatter for a few steps while bodies push against each other)
   for (const std::string& pair : unplanned_now) {
-    if (s.touching_pairs.count(pair) != 0) continue;
+    const auto last = s.last_touch.find(pair);
+    const bool ongoing = last != s.last_touch.end() && t - last->second < kContactGap;
+    s.last_touch[pair] = t;
+    if (ongoing) continue;
     const auto colon = pair.find(':');
     const std::string kind = colon == std::string::npos ? "unplanned contact with object" : pair.substr(0, colon);
     const std::string detail = colon == std::string::npos ? pair : pair.substr(colon + 2);
@@ -280,7 +324,6 @@ void Monitor::observe(const PlanExecutor& executor) {
     }
     s.addEvent(t, kind, detail, robot >= 0 ? s.attribute(robot, -1, t) : nullptr);
   }
-  s.touching_pairs = unplanned_now;
 
   // grasp episodes
   for (std::size_t r = 0; r < num_robots; ++r) {
@@ -304,6 +347,13 @@ void Monitor::observe(const PlanExecutor& executor) {
     if (!closed) {
       hold.release_time = t;
       active = -1;
+      if (!s.releaseIsPlanned(static_cast<int>(r), hold.object, t)) {
+        hold.drop_time = t;
+        s.addEvent(t, "drop",
+                   s.world.robots[r].name + " opened its gripper holding " + s.world.objects[hold.object].name +
+                       " outside any place or handoff",
+                   s.attribute(static_cast<int>(r), hold.object, t));
+      }
       continue;
     }
     const bool both = left[r].count(hold.object) != 0 && right[r].count(hold.object) != 0;
@@ -317,8 +367,7 @@ void Monitor::observe(const PlanExecutor& executor) {
       if (hold.reference_set) {
         const double slip = (X_TO.translation() - hold.X_TO_reference.translation()).norm();
         const double angle = rotationAngle(hold.X_TO_reference.linear().transpose() * X_TO.linear());
-        hold.max_slip = std::max(hold.max_slip, slip);
-        hold.max_slip_angle = std::max(hold.max_slip_angle, angle);
+        hold.slip_samples.push_back({t, slip, angle});
         if (hold.slip_time < 0 && (slip > s.world.checks.slip_tolerance || angle > s.world.checks.slip_angle_tolerance)) {
           hold.slip_time = t;
           s.addEvent(t, "slip",
@@ -352,11 +401,22 @@ void Monitor::observe(const PlanExecutor& executor) {
     const double speed = s.sim.objectLinearVelocity(oi).norm();
     // while manipulated, and after a release until the object comes to rest, its rest pose
     // follows it: only an object that has settled can be knocked
-    if (manipulated) s.settling[o] = true;
+    if (manipulated) {
+      s.settling[o] = true;
+      s.rest_since[o].reset();
+    }
     if (s.settling[o]) {
       s.rest_pose[o] = X;
       s.knocked[o] = false;
-      if (!manipulated && speed < s.world.checks.rest_speed) s.settling[o] = false;
+      // settled once it has stayed at rest for kSettledAfter (a released object may hang
+      // still for a moment before it falls)
+      if (manipulated || speed >= s.world.checks.rest_speed) {
+        s.rest_since[o].reset();
+      } else if (!s.rest_since[o]) {
+        s.rest_since[o] = t;
+      } else if (t - *s.rest_since[o] >= kSettledAfter) {
+        s.settling[o] = false;
+      }
       continue;
     }
     const double moved = (X.translation() - s.rest_pose[o].translation()).norm();
@@ -364,7 +424,7 @@ void Monitor::observe(const PlanExecutor& executor) {
     if (!s.knocked[o] && (moved > kKnockDistance || turned > kKnockAngle)) {
       s.knocked[o] = true;
       const int toucher = s.last_toucher[o];
-      std::string detail = s.world.objects[o].name + " moved " + fmt(moved * 1e3) + " mm from rest";
+      std::string detail = s.world.objects[o].name + " moved " + fmt(moved * 1e3) + " mm / turned " + fmt(turned) + " rad from rest";
       if (toucher >= 0) detail += " (last touched by " + s.world.robots[toucher].name + ")";
       s.addEvent(t, "knocked object", detail, toucher >= 0 ? s.attribute(toucher, -1, t) : s.attribute(-1, oi, t));
     }
@@ -494,13 +554,15 @@ Report Monitor::finish(const PlanExecutor& executor) {
                              fmt(checks.lift_clearance * 1e3) + " mm");
         }
         if (hold != nullptr) {
-          r.measurements.push_back(measure("slip", hold->max_slip, "m", checks.slip_tolerance, "<="));
-          r.measurements.push_back(measure("slip_angle", hold->max_slip_angle, "rad", checks.slip_angle_tolerance, "<="));
-          if (hold->max_slip > checks.slip_tolerance) {
-            failures.push_back("slip " + fmt(hold->max_slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+          // slip while lifting; later slip is judged by the action then in progress
+          const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
+          r.measurements.push_back(measure("slip", slip, "m", checks.slip_tolerance, "<="));
+          r.measurements.push_back(measure("slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
+          if (slip > checks.slip_tolerance) {
+            failures.push_back("slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
           }
-          if (hold->max_slip_angle > checks.slip_angle_tolerance) {
-            failures.push_back("slip angle " + fmt(hold->max_slip_angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+          if (angle > checks.slip_angle_tolerance) {
+            failures.push_back("slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
           }
           if (a.held_at_end && !a.support_contact_at_end) r.observed_end = action.end;
         }
@@ -526,10 +588,14 @@ Report Monitor::finish(const PlanExecutor& executor) {
         const HoldEpisode* hold = episodeOf(a.receiver, a.object, action.start, action.end);
         if (hold != nullptr) {
           r.observed_start = hold->grasp_time;
-          r.measurements.push_back(measure("receiver_slip", hold->max_slip, "m", checks.slip_tolerance, "<="));
-          r.measurements.push_back(measure("receiver_slip_angle", hold->max_slip_angle, "rad", checks.slip_angle_tolerance, "<="));
-          if (hold->max_slip > checks.slip_tolerance) {
-            failures.push_back("receiver slip " + fmt(hold->max_slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+          const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
+          r.measurements.push_back(measure("receiver_slip", slip, "m", checks.slip_tolerance, "<="));
+          r.measurements.push_back(measure("receiver_slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
+          if (slip > checks.slip_tolerance) {
+            failures.push_back("receiver slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+          }
+          if (angle > checks.slip_angle_tolerance) {
+            failures.push_back("receiver slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
           }
         }
         if (a.held_at_end) r.observed_end = *a.command2_time;
@@ -574,7 +640,7 @@ Report Monitor::finish(const PlanExecutor& executor) {
     }
     // drops and slips attributed to this action fail it too
     for (const ExecutionEvent& event : s.events) {
-      if (event.action == r.id && (event.kind == "drop" || event.kind == "knocked object")) {
+      if (event.action == r.id && (event.kind == "drop" || event.kind == "knocked object" || event.kind == "slip")) {
         failures.push_back(event.kind + " at " + fmt(event.t) + " s: " + event.detail);
       }
     }
