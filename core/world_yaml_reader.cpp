@@ -321,9 +321,9 @@ Eigen::Vector3d Reader::vector3(const Field& field) const {
 
 Color Reader::color(const Field& field) const {
   if (field.value.IsScalar()) {
-    if (const auto named = world_yaml::colorByName(field.value.Scalar())) return *named;
+    if (const auto named = colorByName(field.value.Scalar())) return *named;
     std::string names;
-    for (const auto& named : world_yaml::kNamedColors) {
+    for (const auto& named : kNamedColors) {
       names += (names.empty() ? "" : ", ") + std::string(named.name);
     }
     fail(field, "unknown colour " + describe(field.value) + "; use [r, g, b] in [0, 1] or one of " +

@@ -59,7 +59,7 @@ std::string formatName(std::string_view text) {
 }
 
 std::string formatColor(const Color& color) {
-  for (const world_yaml::NamedColor& named : world_yaml::kNamedColors) {
+  for (const NamedColor& named : kNamedColors) {
     if (named.color == color) return std::string(named.name);
   }
   return formatList(std::array{color.r, color.g, color.b});

@@ -1,9 +1,11 @@
 // dashbed run [WORLD]: the main job on a world (the built-in default when none is given).
 //
-// This version loads and validates the world and reports what each robot can reach and which
-// robots can hand objects to each other; planning, simulation and checks plug in here.
+// Loads and validates the world, reports what each robot can reach and which robots can hand
+// objects to each other, plans (with the baseline sequencer until the DaSH planner lands),
+// executes the plan in simulation and checks it.
 
 #include <cmath>
+#include <fstream>
 #include <iomanip>
 #include <iostream>
 #include <numbers>
@@ -14,7 +16,10 @@
 #include "core/asset_paths.h"
 #include "core/reach.h"
 #include "core/world_loader.h"
+#include "sim/run_plan.h"
 #include "tools/cli_support.h"
+#include "tools/sequential_plan.h"
+#include "tools/sim_output.h"
 
 namespace dashbed::tools {
 namespace {
@@ -22,6 +27,9 @@ namespace {
 struct RunOptions {
   std::string world_file;
   bool json = false;
+  bool validate_only = false;
+  std::string plan_out;
+  ReportOutputs outputs;
 };
 
 std::string robotNames(const core::World& world, const std::vector<int>& robots) {
@@ -41,10 +49,7 @@ double yawDegrees(const core::Pose& X) {
   return std::atan2(X.linear()(1, 0), X.linear()(0, 0)) * 180.0 / std::numbers::pi;
 }
 
-void runSummary(const RunOptions& options) {
-  const std::filesystem::path file =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
-  const core::LoadedWorld loaded = core::loadWorld(file);
+void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& file, const RunOptions& options) {
   const core::World& world = *loaded.world;
   const core::RobotSet& robots = *loaded.robots;
 
@@ -110,16 +115,45 @@ void runSummary(const RunOptions& options) {
   std::cout << "\n\nworld is valid: every object start and goal is within some robot's reach.\n";
 }
 
+void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options) {
+  std::cout << "\nplanning (baseline sequencer: one object at a time, shortest robot chain)...\n";
+  const core::Plan plan = sequentialPlan(loaded);
+  if (!options.plan_out.empty()) {
+    std::ofstream out(options.plan_out, std::ios::binary);
+    out << core::writePlanJson(plan);
+    if (!out) throw std::runtime_error("cannot write " + options.plan_out);
+  }
+  std::cout << "plan: " << plan.actions.size() << " actions, " << std::fixed << std::setprecision(2)
+            << plan.duration() << " s\n\nsimulating and checking...\n";
+  sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, "plan");
+  const sim::Report report = sim::runPlan(*loaded.world, *loaded.robots, plan,
+                                          options.plan_out.empty() ? "plan" : options.plan_out);
+  writeReportOutputs(report, options.outputs);
+  if (!report.passed()) throw CLI::RuntimeError(kExitCheckFailed);
+}
+
+void runJob(const RunOptions& options) {
+  const std::filesystem::path file =
+      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const core::LoadedWorld loaded = core::loadWorld(file);
+  printSummary(loaded, file, options);
+  if (!options.validate_only && !options.json) planAndSimulate(loaded, options);
+}
+
 }  // namespace
 
 void addRunCommand(CLI::App& app) {
   auto options = std::make_shared<RunOptions>();
   CLI::App* run = app.add_subcommand(
-      "run", "The main job on a world: load and validate it and report who reaches what "
-             "(default world: worlds/default.yaml)");
+      "run", "The main job: validate a world, plan, execute the plan in simulation and check every grasp, "
+             "handoff and placement (default world: worlds/default.yaml). Exit 0 when all checks pass, 1 when "
+             "any fails, 3 for bad input.");
   run->add_option("world", options->world_file, "world file (YAML)");
-  run->add_flag("--json", options->json, "print JSON");
-  run->callback([options] { runGuarded("run", [&] { runSummary(*options); }); });
+  run->add_flag("--validate-only", options->validate_only, "stop after validating the world");
+  run->add_flag("--json", options->json, "print the world summary as JSON and stop");
+  run->add_option("--plan-out", options->plan_out, "write the plan here (JSON)");
+  addReportOptions(*run, options->outputs);
+  run->callback([options] { runGuarded("run", [&] { runJob(*options); }); });
 }
 
 }  // namespace dashbed::tools

@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <utility>
 
+#include "core/colors.h"
 #include "core/pose.h"
 
 namespace dashbed::tools {
@@ -44,6 +45,9 @@ namespace {
 constexpr double kPi = std::numbers::pi;
 constexpr double kTableHeight = 0.75;  // [m], top face of every table
 constexpr double kCubeEdge = 0.04;     // [m], Hand-E opens to 50 mm
+// Shelf items stand 120 mm tall, so a gripper coming in from the side holds them high enough
+// for its 75 mm wide body to clear the shelf board (core/grasps.h).
+const Eigen::Vector3d kShelfItemSize(0.04, 0.04, 0.12);
 constexpr double kCubeMass = 0.1;      // [kg]
 constexpr double kCubeFriction = 0.8;
 constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice cell per axis
@@ -54,16 +58,15 @@ constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.
 constexpr core::Color kWood{0.62, 0.45, 0.28};
 constexpr core::Color kShelfGrey{0.55, 0.56, 0.6};
 
+// object classes in order, coloured by the world format's named colours (core/colors.h)
+constexpr std::array<const char*, 4> kClassNames{"red", "green", "blue", "yellow"};
+
 struct ClassInfo {
   const char* name;
   core::Color color;
 };
-constexpr std::array<ClassInfo, 4> kClasses{{
-    {"red", {0.85, 0.15, 0.15}},
-    {"green", {0.15, 0.7, 0.2}},
-    {"blue", {0.15, 0.3, 0.85}},
-    {"yellow", {0.95, 0.8, 0.1}},
-}};
+
+ClassInfo classInfo(std::size_t k) { return {kClassNames[k], *core::colorByName(kClassNames[k])}; }
 
 // A rectangular zone of cube centres in the table plane, given in a robot-like frame: origin
 // p_W, unit axis u_W (the frame's x), lateral axis v_W = z × u; the zone is
@@ -124,21 +127,21 @@ core::FixtureSpec makeBin(const ClassInfo& cls, const Eigen::Vector2d& p_W) {
   return bin;
 }
 
-// A cube standing on the table at a jittered lattice cell with a random yaw.
-core::ObjectSpec makeCube(std::string name, const ClassInfo& cls, const Eigen::Vector2d& cell_W,
-                          ScenarioRng& rng) {
+// A box of `size` standing on the table at a jittered lattice cell with a random yaw.
+core::ObjectSpec makeBox(std::string name, const ClassInfo& cls, const Eigen::Vector3d& size,
+                         const Eigen::Vector2d& cell_W, ScenarioRng& rng) {
   const double dx = rng.uniform(-kJitter, kJitter);
   const double dy = rng.uniform(-kJitter, kJitter);
   const double yaw = rng.uniform(-0.25 * kPi, 0.25 * kPi);
   core::ObjectSpec cube;
   cube.name = std::move(name);
-  cube.size = Eigen::Vector3d::Constant(kCubeEdge);
+  cube.size = size;
   cube.mass = kCubeMass;
   cube.friction = kCubeFriction;
   cube.color = cls.color;
   cube.object_class = cls.name;
   cube.X_WO = core::makePoseXyzYaw(
-      Eigen::Vector3d(cell_W.x() + dx, cell_W.y() + dy, kTableHeight + 0.5 * kCubeEdge), yaw);
+      Eigen::Vector3d(cell_W.x() + dx, cell_W.y() + dy, kTableHeight + 0.5 * size.z()), yaw);
   return cube;
 }
 
@@ -179,7 +182,7 @@ core::World generateSorting(const SortingParams& params) {
   std::vector<SortingRobot> robots;
   std::vector<Zone> exclusive_zones;  // one per robot, in front of it
   std::vector<Zone> random_zones;     // the zones random starts draw from
-  std::vector<Eigen::Vector2d> bin_positions(kClasses.size());
+  std::vector<Eigen::Vector2d> bin_positions(kClassNames.size());
 
   if (params.robots == 2) {
     world.fixtures.push_back(makeTable(2.0, 1.4));
@@ -213,12 +216,12 @@ core::World generateSorting(const SortingParams& params) {
     world.robots.push_back(makeRobot("r" + std::to_string(r), robots[r].p_W, yaw));
   }
   for (int c = 0; c < params.classes; ++c) {
-    world.fixtures.push_back(makeBin(kClasses[c], bin_positions[c]));
+    world.fixtures.push_back(makeBin(classInfo(c), bin_positions[c]));
   }
 
   // class of each cube (round robin) and the robot owning that class's bin
   std::vector<int> cube_class(params.cubes);
-  std::vector<int> class_owner(kClasses.size(), -1);
+  std::vector<int> class_owner(kClassNames.size(), -1);
   for (std::size_t r = 0; r < robots.size(); ++r) {
     for (int c : robots[r].owned_classes) class_owner[c] = static_cast<int>(r);
   }
@@ -268,16 +271,16 @@ core::World generateSorting(const SortingParams& params) {
   std::vector<std::size_t> next_cell(cells.size(), 0);
   for (int i = 0; i < params.cubes; ++i) {
     const int z = cube_zone[i];
-    const ClassInfo& cls = kClasses[cube_class[i]];
+    const ClassInfo cls = classInfo(cube_class[i]);
     world.objects.push_back(
-        makeCube("cube_" + std::to_string(i), cls, cells[z][next_cell[z]++], rng));
+        makeBox("cube_" + std::to_string(i), cls, Eigen::Vector3d::Constant(kCubeEdge), cells[z][next_cell[z]++], rng));
   }
   // a class goal for each class that has cubes (with fewer cubes than classes some bins stay
   // empty; a goal for a class without objects would be an error in the world file)
   for (int c = 0; c < std::min(params.classes, params.cubes); ++c) {
     core::Goal goal;
-    goal.object_class = kClasses[c].name;
-    goal.region = std::string("bin_") + kClasses[c].name;
+    goal.object_class = classInfo(c).name;
+    goal.region = std::string("bin_") + classInfo(c).name;
     world.goals.push_back(goal);
   }
 
@@ -352,13 +355,13 @@ core::World generateShelving(const ShelvingParams& params) {
       zoneCells({{0.0, 0.0}, {1.0, 0.0}, 0.2, 0.38, -0.6, 0.6});
   rng.shuffle(cells);
 
-  const ClassInfo& green = kClasses[1];
-  const ClassInfo& blue = kClasses[2];
+  const ClassInfo green = classInfo(1);
+  const ClassInfo blue = classInfo(2);
   std::size_t next_cell = 0;
   for (int k = 0; k < pairs; ++k) {
     for (const auto& [cls, side] : {std::pair{&green, "back"}, std::pair{&blue, "front"}}) {
       const std::string name = std::string(cls->name) + "_" + std::to_string(k);
-      world.objects.push_back(makeCube(name, *cls, cells[next_cell++], rng));
+      world.objects.push_back(makeBox(name, *cls, kShelfItemSize, cells[next_cell++], rng));
       core::Goal goal;
       goal.object = name;
       goal.region = slotName(columns[k], side);

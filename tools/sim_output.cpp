@@ -28,7 +28,7 @@ void writeReportOutputs(const sim::Report& report, const ReportOutputs& outputs)
   std::cout << std::fixed << std::setprecision(2);
   if (!outputs.quiet) {
     for (const sim::ActionReport& a : report.actions) {
-      std::cout << (a.verdict == sim::Verdict::kPassed ? "  PASS " : "  FAIL ") << std::setw(7) << a.planned_start
+      std::cout << (a.verdict == sim::Verdict::kPassed ? "  PASS " : "  FAIL ") << std::right << std::setw(7) << a.planned_start
                 << "-" << std::left << std::setw(7) << a.planned_end << std::right << " " << a.id;
       if (a.verdict == sim::Verdict::kFailed) std::cout << ": " << a.failure;
       std::cout << "\n";

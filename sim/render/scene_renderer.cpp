@@ -175,10 +175,11 @@ struct DrawItem {
 };
 
 // The visual geometry of one robot link: all its visual meshes merged, in the link frame,
-// coloured per vertex (one draw per link).
+// coloured per vertex (one draw per link), and a low-polygon stand-in that casts its shadow.
 struct LinkGeometry {
   int link = 0;
   int mesh = 0;
+  int shadow_mesh = 0;  // the link's collision primitives (its visual mesh if it has none)
 };
 
 Eigen::Affine3d boxTransform(const core::Pose& X_WB, const Eigen::Vector3d& size) {
@@ -424,6 +425,72 @@ void appendPlaced(CpuMesh& link_mesh, const CpuMesh& part, const Eigen::Affine3d
   for (std::uint32_t i : part.indices) link_mesh.indices.push_back(base + i);
 }
 
+
+// A closed convex stand-in for a collision primitive in its own frame (normals unused: the
+// shadow pass writes depth only). Cylinders along z with 16 sides, spheres with 8 x 16 facets.
+// Every face is moved inwards by `inset` [m] (at most to half the size), so that the stand-in
+// stays inside the visual surface it approximates and never shadows that surface itself.
+CpuMesh primitiveMesh(const core::CollisionShape& shape, double inset) {
+  const auto shrink = [&](double half_extent) { return std::max(0.5 * half_extent, half_extent - inset); };
+  CpuMesh mesh;
+  const auto add = [&](const Eigen::Vector3d& p) {
+    mesh.vertices.push_back({{static_cast<float>(p.x()), static_cast<float>(p.y()), static_cast<float>(p.z())},
+                             {0.0f, 0.0f, 1.0f},
+                             {1.0f, 1.0f, 1.0f, 1.0f}});
+  };
+  const auto triangle = [&](std::uint32_t a, std::uint32_t b, std::uint32_t c) {
+    mesh.indices.insert(mesh.indices.end(), {a, b, c});
+  };
+  constexpr double kTwoPi = 6.283185307179586;
+  switch (shape.type) {
+    case core::ShapeType::kBox: {
+      mesh = unitCube();
+      for (Vertex& v : mesh.vertices) {
+        for (int k = 0; k < 3; ++k) v.position[k] *= static_cast<float>(2.0 * shrink(0.5 * shape.size[k]));
+      }
+      break;
+    }
+    case core::ShapeType::kCylinder: {
+      constexpr int kSides = 16;
+      const double r = shrink(shape.size.x()), h = shrink(0.5 * shape.size.z());
+      add({0.0, 0.0, -h});  // 0: bottom centre
+      add({0.0, 0.0, h});   // 1: top centre
+      for (int i = 0; i < kSides; ++i) {
+        const double a = kTwoPi * i / kSides;
+        add({r * std::cos(a), r * std::sin(a), -h});  // 2 + 2i
+        add({r * std::cos(a), r * std::sin(a), h});   // 3 + 2i
+      }
+      for (int i = 0; i < kSides; ++i) {
+        const std::uint32_t b0 = 2 + 2 * i, t0 = b0 + 1, b1 = 2 + 2 * ((i + 1) % kSides), t1 = b1 + 1;
+        triangle(b0, b1, t1);  // counter-clockwise seen from outside
+        triangle(b0, t1, t0);
+        triangle(0, b1, b0);
+        triangle(1, t0, t1);
+      }
+      break;
+    }
+    case core::ShapeType::kSphere: {
+      constexpr int kRings = 8, kSegments = 16;
+      const double r = shrink(shape.size.x());
+      for (int i = 0; i <= kRings; ++i) {
+        const double polar = 0.5 * kTwoPi * i / kRings;
+        for (int j = 0; j < kSegments; ++j) {
+          const double a = kTwoPi * j / kSegments;
+          add({r * std::sin(polar) * std::cos(a), r * std::sin(polar) * std::sin(a), r * std::cos(polar)});
+        }
+      }
+      for (int i = 0; i < kRings; ++i) {
+        for (int j = 0; j < kSegments; ++j) {
+          const std::uint32_t a = i * kSegments + j, b = i * kSegments + (j + 1) % kSegments;
+          triangle(a, a + kSegments, b + kSegments);
+          triangle(a, b + kSegments, b);
+        }
+      }
+      break;
+    }
+  }
+  return mesh;
+}
 }  // namespace
 
 struct SceneRenderer::Impl {
@@ -491,7 +558,7 @@ struct SceneRenderer::Impl {
   void ensureMsaaTarget();
   void releaseMsaaTarget();
   void collectMovingItems(const SceneState& state, std::vector<DrawItem>& robot_items,
-                          std::vector<DrawItem>& object_items) const;
+                          std::vector<DrawItem>& object_items, std::vector<DrawItem>& shadow_items) const;
   void drawDepth(const std::vector<DrawItem>& items);
   void drawShadowPass(const std::vector<DrawItem>& moving);
   void setFrameUniforms(const SurfaceProgram& program, const Eigen::Matrix4f& view_proj, const Camera& camera);
@@ -527,7 +594,7 @@ void SceneRenderer::Impl::makeCurrent(int w, int h) {
 }
 
 void SceneRenderer::Impl::createPrograms() {
-  const std::string shadows = settings.shadows ? "#define SHADOWS\n" : "";
+  const std::string shadows = (settings.shadows && !std::getenv("NOSAMPLE")) ? "#define SHADOWS\n" : "";
   const std::string grid = settings.floor_grid ? "#define GRID\n" : "";
   mesh_program = makeSurfaceProgram("#define PIXEL_LIGHTING\n" + shadows);
   box_program = makeSurfaceProgram(shadows);
@@ -548,17 +615,20 @@ void SceneRenderer::Impl::loadMeshes() {
   // each mesh file is read once; each link of each model becomes one vertex-coloured mesh,
   // shared by the robots using that model
   std::map<std::filesystem::path, CpuMesh> file_meshes;
-  std::map<std::pair<const core::RobotModel*, int>, int> link_meshes;
+  std::map<std::pair<const core::RobotModel*, int>, LinkGeometry> link_geometry;
   for (const core::PlacedRobot& robot : robots.robots()) {
     std::vector<LinkGeometry> links;
     const std::vector<core::LinkModel>& model_links = robot.model->links();
     for (std::size_t l = 0; l < model_links.size(); ++l) {
-      if (model_links[l].visuals.empty()) continue;
+      const core::LinkModel& link = model_links[l];
+      if (link.visuals.empty()) continue;
       const auto key = std::make_pair(robot.model, static_cast<int>(l));
-      auto found = link_meshes.find(key);
-      if (found == link_meshes.end()) {
+      auto found = link_geometry.find(key);
+      if (found == link_geometry.end()) {
+        LinkGeometry geometry;
+        geometry.link = static_cast<int>(l);
         CpuMesh link_mesh;
-        for (const core::VisualMesh& visual : model_links[l].visuals) {
+        for (const core::VisualMesh& visual : link.visuals) {
           auto file = file_meshes.find(visual.file);
           if (file == file_meshes.end()) file = file_meshes.emplace(visual.file, readMeshFile(visual.file)).first;
           Eigen::Affine3d X_LV(visual.X_LV.matrix());
@@ -567,10 +637,23 @@ void SceneRenderer::Impl::loadMeshes() {
           rgba[3] = 1.0f;  // robots are drawn opaque
           appendPlaced(link_mesh, file->second, X_LV, rgba);
         }
-        found = link_meshes.emplace(key, static_cast<int>(meshes.size())).first;
+        geometry.mesh = static_cast<int>(meshes.size());
         meshes.push_back(uploadMesh(link_mesh, true));
+        // the collision primitives envelop the visuals closely and have a tenth of their
+        // triangles, which makes the shadow pass cheap
+        if (link.collisions.empty()) {
+          geometry.shadow_mesh = geometry.mesh;
+        } else {
+          CpuMesh proxy;
+          for (const core::CollisionShape& shape : link.collisions) {
+            appendPlaced(proxy, primitiveMesh(shape, 0.004), Eigen::Affine3d(shape.X_LS.matrix()), Eigen::Vector4f::Ones());
+          }
+          geometry.shadow_mesh = static_cast<int>(meshes.size());
+          meshes.push_back(uploadMesh(proxy, false));
+        }
+        found = link_geometry.emplace(key, geometry).first;
       }
-      links.push_back({static_cast<int>(l), found->second});
+      links.push_back(found->second);
     }
     robot_links.push_back(std::move(links));
   }
@@ -713,7 +796,8 @@ void SceneRenderer::Impl::ensureMsaaTarget() {
 }
 
 void SceneRenderer::Impl::collectMovingItems(const SceneState& state, std::vector<DrawItem>& robot_items,
-                                             std::vector<DrawItem>& object_items) const {
+                                             std::vector<DrawItem>& object_items,
+                                             std::vector<DrawItem>& shadow_items) const {
   for (std::size_t r = 0; r < robot_links.size(); ++r) {
     for (const LinkGeometry& link : robot_links[r]) {
       DrawItem item;
@@ -722,6 +806,8 @@ void SceneRenderer::Impl::collectMovingItems(const SceneState& state, std::vecto
       item.specular = 0.30f;
       item.shininess = 40.0f;
       robot_items.push_back(item);
+      item.mesh = link.shadow_mesh;
+      shadow_items.push_back(item);
     }
   }
   for (std::size_t o = 0; o < world.objects.size(); ++o) {
@@ -732,6 +818,7 @@ void SceneRenderer::Impl::collectMovingItems(const SceneState& state, std::vecto
     item.specular = 0.15f;
     item.shininess = 24.0f;
     object_items.push_back(item);
+    shadow_items.push_back(item);
   }
 }
 
@@ -758,11 +845,11 @@ void SceneRenderer::Impl::drawDepth(const std::vector<DrawItem>& items) {
 
 void SceneRenderer::Impl::drawShadowPass(const std::vector<DrawItem>& moving) {
   const GLsizei n = settings.shadow_map_size;
-  glCopyImageSubData(static_shadow_texture, GL_TEXTURE_2D, 0, 0, 0, 0, shadow_texture, GL_TEXTURE_2D, 0, 0, 0, 0, n, n,
+  if (!std::getenv("NOCOPY")) glCopyImageSubData(static_shadow_texture, GL_TEXTURE_2D, 0, 0, 0, 0, shadow_texture, GL_TEXTURE_2D, 0, 0, 0, 0, n, n,
                      1);
   glBindFramebuffer(GL_FRAMEBUFFER, shadow_fbo);
   glViewport(0, 0, n, n);
-  drawDepth(moving);
+  if (!std::getenv("NOMOVING")) drawDepth(moving);
 }
 
 void SceneRenderer::Impl::setFrameUniforms(const SurfaceProgram& program, const Eigen::Matrix4f& view_proj,
@@ -873,19 +960,15 @@ Image SceneRenderer::render(const SceneState& state, const Camera& camera, const
   s.makeCurrent(camera.width, camera.height);
   if (s.settings.msaa_samples > 0 && (resized || !s.msaa_fbo)) s.ensureMsaaTarget();
 
-  std::vector<DrawItem> robot_items, object_items;
-  s.collectMovingItems(state, robot_items, object_items);
+  std::vector<DrawItem> robot_items, object_items, shadow_items;
+  s.collectMovingItems(state, robot_items, object_items, shadow_items);
 
   glEnable(GL_DEPTH_TEST);
   glDepthFunc(GL_LESS);
   glDisable(GL_CULL_FACE);
   glDisable(GL_BLEND);
   glDepthMask(GL_TRUE);
-  if (s.settings.shadows) {
-    std::vector<DrawItem> moving = robot_items;
-    moving.insert(moving.end(), object_items.begin(), object_items.end());
-    s.drawShadowPass(moving);
-  }
+  if (s.settings.shadows) s.drawShadowPass(shadow_items);
 
   // clip planes hugging the scene keep depth precision where it matters
   double near_m = 1e300, far_m = 0.0;
