@@ -8,6 +8,8 @@
 
 #include "core/plan.h"
 
+#include "core/text_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -666,16 +668,7 @@ Plan parsePlanJson(std::string_view json_text, const std::string& file_name) {
 }
 
 Plan loadPlanFile(const std::filesystem::path& file) {
-  const std::string file_name = file.string();
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) {
-    throw PlanError(file_name + ": cannot open the plan file: " +
-                    std::error_code(errno, std::generic_category()).message());
-  }
-  std::ostringstream text;
-  text << stream.rdbuf();
-  if (stream.bad()) throw PlanError(file_name + ": cannot read the plan file");
-  return parsePlanJson(text.str(), file_name);
+  return parsePlanJson(readTextFile<PlanError>(file, "plan"), file.string());
 }
 
 void validatePlan(const Plan& plan, const World& world,

@@ -22,6 +22,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/geometry.h"
+#include "core/text_file.h"
 #include "core/world_io.h"
 #include "core/world_yaml_detail.h"
 
@@ -823,20 +824,7 @@ World parseWorldYaml(std::string_view yaml_text, const std::string& file_name) {
 }
 
 World loadWorldFile(const std::filesystem::path& file) {
-  std::error_code ec;
-  if (std::filesystem::is_directory(file, ec)) {
-    throw WorldError(file.string() + ": cannot read world file: it is a directory");
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) {
-    throw WorldError(file.string() + ": cannot read world file: " +
-                     (std::filesystem::exists(file, ec) ? "permission denied or unreadable"
-                                                        : "no such file"));
-  }
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (in.bad()) throw WorldError(file.string() + ": cannot read world file: read error");
-  World world = parseWorldYaml(text.str(), file.string());
+  World world = parseWorldYaml(readTextFile<WorldError>(file, "world"), file.string());
   world.source_file = file.string();
   return world;
 }

@@ -4,6 +4,8 @@
 
 #include "sim/report.h"
 
+#include "core/text_file.h"
+
 #include <algorithm>
 #include <cerrno>
 #include <charconv>
@@ -339,7 +341,9 @@ std::string xmlEscape(std::string_view text, bool attribute) {
 }
 
 std::string attr(std::string_view name, std::string_view value) {
-  return " " + std::string(name) + "=\"" + xmlEscape(value, true) + "\"";
+  std::string out = " ";
+  out.append(name).append("=\"").append(xmlEscape(value, true)).append("\"");
+  return out;
 }
 
 // the JUnit failure type of an action: which physical check it is
@@ -503,15 +507,7 @@ Report readReportJson(std::string_view json_text, const std::string& file_name) 
 }
 
 Report loadReportFile(const std::filesystem::path& file) {
-  const std::string file_name = file.string();
-  std::ifstream stream(file, std::ios::binary);
-  if (!stream) {
-    throw ReportError(file_name + ": cannot open the report file: " +
-                      std::error_code(errno, std::generic_category()).message());
-  }
-  std::ostringstream text;
-  text << stream.rdbuf();
-  return readReportJson(text.str(), file_name);
+  return readReportJson(core::readTextFile<ReportError>(file, "report"), file.string());
 }
 
 std::string writeJUnitXml(const Report& report) {

@@ -175,8 +175,8 @@ Camera cameraPreset(const core::World& world, std::string_view preset, int width
     const double a = azimuth_deg * kDegToRad, e = elevation_deg * kDegToRad;
     return Eigen::Vector3d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
   };
-  if (preset == "oblique") return frameBox(bounds, -towardsEye(-60.0, 30.0), z, 40.0, width, height);
-  if (preset == "front") return frameBox(bounds, -towardsEye(-90.0, 15.0), z, 40.0, width, height);
+  if (preset == "oblique") return frameBox(bounds, -towardsEye(-60.0, 35.0), z, 40.0, width, height);
+  if (preset == "front") return frameBox(bounds, -towardsEye(-90.0, 22.0), z, 40.0, width, height);
   if (preset == "top") return frameBox(bounds, -z, Eigen::Vector3d::UnitY(), 40.0, width, height);
   if (preset.starts_with("side:")) {
     const std::string_view name = preset.substr(5);

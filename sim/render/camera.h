@@ -52,8 +52,8 @@ Eigen::AlignedBox3d worldBounds(const core::World& world);
 std::vector<std::string> cameraPresetNames(const core::World& world);
 
 /// A preset camera framing `world` (every corner of worldBounds inside the image):
-///  - "oblique": a 3/4 view from the front right, 30 degrees above the horizon;
-///  - "front":   from -y towards +y, slightly from above;
+///  - "oblique": a 3/4 view from the front right (azimuth -60 deg), 35 deg above the horizon;
+///  - "front":   from -y towards +y, 22 deg above the horizon;
 ///  - "top":     straight down, +x to the right and +y up in the image;
 ///  - "side:<robot>": from behind and beside the robot (its base frame's -x, -y) over its
 ///    shoulder towards the workspace in front of it (+x of its base).

@@ -49,8 +49,8 @@ void shade(vec3 albedo, vec3 p_W, vec3 n, out vec3 unkeyed, out vec3 keyed) {
   float fill = max(dot(n, u_fill_W), 0.0);
   vec3 h = normalize(u_key_W + normalize(u_eye_W - p_W));
   float highlight = key > 0.0 ? u_specular * pow(max(dot(n, h), 0.0), u_shininess) : 0.0;
-  unkeyed = albedo * (0.30 + 0.08 * n.z + 0.20 * fill);
-  keyed = albedo * (0.58 * key) + vec3(highlight);
+  unkeyed = albedo * (0.34 + 0.08 * n.z + 0.18 * fill);
+  keyed = albedo * (0.54 * key) + vec3(highlight);
 }
 )";
 

@@ -540,7 +540,7 @@ TEST_CASE("unreadable files and empty text", "[plan]") {
   REQUIRE_THROWS_MATCHES(
       loadPlanFile(missing), PlanError,
       Catch::Matchers::Message(missing.string() +
-                               ": cannot open the plan file: No such file or directory"));
+                               ": cannot read the plan file: no such file"));
   REQUIRE_THROWS_WITH(
       parsePlanJson("", "empty.json"),
       Catch::Matchers::StartsWith("empty.json: /: invalid JSON: parse error at line 1, column 1"));

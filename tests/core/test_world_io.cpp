@@ -605,9 +605,9 @@ TEST_CASE("truncated world files throw WorldError or parse, nothing else", "[wor
 TEST_CASE("unreadable world files name the path", "[world_io]") {
   const std::filesystem::path missing = kWorlds / "no_such_world.yaml";
   CHECK_THROWS_MATCHES(loadWorldFile(missing), WorldError,
-                       Catch::Matchers::Message(missing.string() + ": cannot read world file: no such file"));
+                       Catch::Matchers::Message(missing.string() + ": cannot read the world file: no such file"));
   CHECK_THAT(worldErrorOf([&] { loadWorldFile(kWorlds); }),
-             Contains(kWorlds.string() + ": cannot read world file: it is a directory"));
+             Contains(kWorlds.string() + ": cannot read the world file: it is a directory"));
 }
 
 TEST_CASE("inline YAML: file name in messages and a few more cases", "[world_io]") {
