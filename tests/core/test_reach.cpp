@@ -1,0 +1,75 @@
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include "core/grasps.h"
+#include "core/reach.h"
+#include "core/world_io.h"
+#include "core/world_loader.h"
+
+using namespace dashbed::core;
+
+namespace {
+
+const std::string kRoot = DASHBED_SOURCE_ROOT;
+
+std::string defaultWorldText() {
+  std::ifstream in(kRoot + "/worlds/default.yaml");
+  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+}
+
+}  // namespace
+
+TEST_CASE("the default world is reachable: cross starts need a handoff", "[reach]") {
+  const LoadedWorld dut = loadWorld(kRoot + "/worlds/default.yaml");
+  for (std::size_t o = 0; o < dut.world->objects.size(); ++o) {
+    INFO(dut.world->objects[o].name);
+    CHECK(dut.reach.start[o].size() == 1);
+    CHECK(dut.reach.goal[o].size() == 1);
+    CHECK(dut.reach.start[o] != dut.reach.goal[o]);
+  }
+  CHECK(workspacesOverlap((*dut.robots)[0], (*dut.robots)[1]));
+}
+
+TEST_CASE("an object out of every robot's reach names its file, line and field", "[reach]") {
+  // move cube_0 to the far corner of the table, more than a metre from both bases
+  World world = parseWorldYaml(defaultWorldText(), "worlds/default.yaml");
+  const auto cube = std::find_if(world.objects.begin(), world.objects.end(),
+                                 [](const ObjectSpec& o) { return o.name == "cube_0"; });
+  REQUIRE(cube != world.objects.end());
+  cube->X_WO.translation() = Eigen::Vector3d(0.0, 0.66, 0.77);
+  const int line = cube->where.line;
+  REQUIRE(line > 0);
+  REQUIRE_THROWS_AS(validateWorld(world), WorldError);
+  REQUIRE_THROWS_WITH(validateWorld(world), Catch::Matchers::Contains("worlds/default.yaml:" + std::to_string(line)) &&
+                                                Catch::Matchers::Contains("pose: object 'cube_0'") &&
+                                                Catch::Matchers::Contains("out of every robot's reach"));
+}
+
+TEST_CASE("a goal region out of every robot's reach names the goal", "[reach]") {
+  World world = parseWorldYaml(defaultWorldText(), "worlds/default.yaml");
+  // lift every region 2 m up: nothing can place there
+  for (Region& region : world.regions) region.X_WR.translation().z() += 2.0;
+  REQUIRE_THROWS_AS(validateWorld(world), WorldError);
+  REQUIRE_THROWS_WITH(validateWorld(world), Catch::Matchers::Contains("goals[") &&
+                                                Catch::Matchers::Contains("out of every robot's reach"));
+}
+
+TEST_CASE("grasps of a resting cube come from above only", "[reach]") {
+  // a 40 mm cube is too low for the 75 mm Hand-E body to come in from the side
+  const auto cube = boxGrasps(Eigen::Vector3d::Constant(0.04));
+  CHECK(cube.size() == 4);
+  for (const BoxGrasp& g : cube) CHECK(g.approach == GraspApproach::kTop);
+  // a 120 mm item also has side grasps, held high enough for the body to clear the surface
+  const auto item = boxGrasps(Eigen::Vector3d(0.04, 0.04, 0.12));
+  CHECK(item.size() == 12);
+  for (const BoxGrasp& g : item) {
+    if (g.approach != GraspApproach::kSide) continue;
+    CHECK(0.06 + g.X_OT.translation().z() - kHandeBodyHalfWidth >= 0.0);
+  }
+  // wider than the opening: no grasp across that face pair
+  CHECK(boxGrasps(Eigen::Vector3d(0.06, 0.03, 0.04)).size() == 2);
+}
