@@ -178,9 +178,11 @@ struct Monitor::State {
     return next != nullptr ? next : previous;
   }
 
-  void addEvent(double t, std::string kind, std::string detail, const ActionTrack* action) {
+  void addEvent(double t, std::string kind, std::string detail, const ActionTrack* action,
+                const Eigen::Vector3d& where_W) {
     ExecutionEvent event;
     event.t = t;
+    event.where_W = where_W;
     event.kind = std::move(kind);
     event.detail = std::move(detail);
     if (action != nullptr) event.action = actionId(*action->action);
@@ -267,6 +269,8 @@ Monitor::Monitor(const Simulation& sim, const core::Plan& plan, double plan_time
 
 Monitor::~Monitor() = default;
 
+const std::vector<ExecutionEvent>& Monitor::events() const { return state_->events; }
+
 void Monitor::observe(const PlanExecutor& executor) {
   State& s = *state_;
   const double t = s.planTime();
@@ -278,7 +282,7 @@ void Monitor::observe(const PlanExecutor& executor) {
   std::vector<std::set<int>> left(num_robots), right(num_robots);   // objects touched by each finger
   std::vector<bool> support(num_objects, false);                    // object touches scenery or another object
   std::vector<std::vector<std::string>> touched_by(num_objects);    // everything touching each object
-  std::set<std::string> unplanned_now;
+  std::map<std::string, Eigen::Vector3d> unplanned_now;  // pair -> a contact point
   for (const Contact& c : s.sim.contacts()) {
     for (int side = 0; side < 2; ++side) {
       const BodyRef& a = side == 0 ? c.a : c.b;
@@ -292,7 +296,7 @@ void Monitor::observe(const PlanExecutor& executor) {
         const bool planned = s.isFinger(b) && (s.inActionWith(b.index, a.index, t) ||
                                                (s.active_hold[b.index] >= 0 && s.holds[s.active_hold[b.index]].object == a.index) ||
                                                s.releasedRecently(b.index, a.index, t));
-        if (!planned) unplanned_now.insert(s.bodyName(b) + " touches " + s.bodyName(a));
+        if (!planned) unplanned_now.emplace(s.bodyName(b) + " touches " + s.bodyName(a), c.point_W);
       } else {
         support[a.index] = true;
       }
@@ -301,15 +305,15 @@ void Monitor::observe(const PlanExecutor& executor) {
       const BodyRef& robot = c.a.kind == BodyRef::Kind::kRobot ? c.a : c.b;
       const BodyRef& other = c.a.kind == BodyRef::Kind::kRobot ? c.b : c.a;
       if (other.kind == BodyRef::Kind::kRobot && other.index != robot.index) {
-        unplanned_now.insert("robot-robot contact: " + s.bodyName(c.a) + " touches " + s.bodyName(c.b));
+        unplanned_now.emplace("robot-robot contact: " + s.bodyName(c.a) + " touches " + s.bodyName(c.b), c.point_W);
       } else if (other.kind == BodyRef::Kind::kFixture || other.kind == BodyRef::Kind::kFloor) {
-        unplanned_now.insert("robot-fixture contact: " + s.bodyName(robot) + " touches " + s.bodyName(other));
+        unplanned_now.emplace("robot-fixture contact: " + s.bodyName(robot) + " touches " + s.bodyName(other), c.point_W);
       }
     }
   }
   // an unplanned pair is reported when it starts touching after a while apart (contacts
   // chatter for a few steps while bodies push against each other)
-  for (const std::string& pair : unplanned_now) {
+  for (const auto& [pair, point_W] : unplanned_now) {
     const auto last = s.last_touch.find(pair);
     const bool ongoing = last != s.last_touch.end() && t - last->second < kContactGap;
     s.last_touch[pair] = t;
@@ -322,7 +326,7 @@ void Monitor::observe(const PlanExecutor& executor) {
     for (std::size_t r = 0; r < num_robots && robot < 0; ++r) {
       if (detail.rfind(s.world.robots[r].name + "/", 0) == 0) robot = static_cast<int>(r);
     }
-    s.addEvent(t, kind, detail, robot >= 0 ? s.attribute(robot, -1, t) : nullptr);
+    s.addEvent(t, kind, detail, robot >= 0 ? s.attribute(robot, -1, t) : nullptr, point_W);
   }
 
   // grasp episodes
@@ -352,7 +356,7 @@ void Monitor::observe(const PlanExecutor& executor) {
         s.addEvent(t, "drop",
                    s.world.robots[r].name + " opened its gripper holding " + s.world.objects[hold.object].name +
                        " outside any place or handoff",
-                   s.attribute(static_cast<int>(r), hold.object, t));
+                   s.attribute(static_cast<int>(r), hold.object, t), s.sim.objectPose(hold.object).translation());
       }
       continue;
     }
@@ -373,7 +377,7 @@ void Monitor::observe(const PlanExecutor& executor) {
           s.addEvent(t, "slip",
                      s.world.objects[hold.object].name + " slipped " + fmt(slip * 1e3) + " mm / " + fmt(angle) +
                          " rad in the gripper of " + s.world.robots[r].name,
-                     s.attribute(static_cast<int>(r), hold.object, t));
+                     s.attribute(static_cast<int>(r), hold.object, t), s.sim.objectPose(hold.object).translation());
         }
       }
     } else {
@@ -382,7 +386,8 @@ void Monitor::observe(const PlanExecutor& executor) {
         hold.drop_time = *hold.lost_since;
         s.addEvent(*hold.lost_since, "drop",
                    s.world.robots[r].name + " lost " + s.world.objects[hold.object].name + " with its gripper closed",
-                   s.attribute(static_cast<int>(r), hold.object, *hold.lost_since));
+                   s.attribute(static_cast<int>(r), hold.object, *hold.lost_since),
+                   s.sim.objectPose(hold.object).translation());
         active = -1;
       }
     }
@@ -426,7 +431,8 @@ void Monitor::observe(const PlanExecutor& executor) {
       const int toucher = s.last_toucher[o];
       std::string detail = s.world.objects[o].name + " moved " + fmt(moved * 1e3) + " mm / turned " + fmt(turned) + " rad from rest";
       if (toucher >= 0) detail += " (last touched by " + s.world.robots[toucher].name + ")";
-      s.addEvent(t, "knocked object", detail, toucher >= 0 ? s.attribute(toucher, -1, t) : s.attribute(-1, oi, t));
+      s.addEvent(t, "knocked object", detail, toucher >= 0 ? s.attribute(toucher, -1, t) : s.attribute(-1, oi, t),
+                 X.translation());
     }
     // at rest and untouched by robots: this is its new rest pose
     const bool robot_touching = std::any_of(touched_by[o].begin(), touched_by[o].end(), [&](const std::string& name) {

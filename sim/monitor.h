@@ -34,6 +34,9 @@ class Monitor {
   /// Records what happened in the step just taken (the executor tells the grippers' state).
   void observe(const PlanExecutor& executor);
 
+  /// The events found so far (drops, slips, knocks, unplanned contacts), in time order.
+  const std::vector<ExecutionEvent>& events() const;
+
   /// Judges every action and the execution; call once after the run.
   Report finish(const PlanExecutor& executor);
 

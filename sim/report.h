@@ -10,6 +10,8 @@
 #include <string_view>
 #include <vector>
 
+#include <Eigen/Core>
+
 #include "core/plan.h"
 
 namespace dashbed::sim {
@@ -56,6 +58,7 @@ struct ExecutionEvent {
   std::string kind;        ///< "robot-robot contact", "robot-fixture contact", "knocked object", "drop", ...
   std::string detail;      ///< bodies involved, with the action in progress
   std::string action;      ///< id of the action it is attributed to, or ""
+  Eigen::Vector3d where_W = Eigen::Vector3d::Zero();  ///< where it happened (world) [m]
 };
 
 /// Per-robot execution quality.

@@ -32,7 +32,7 @@ Report runPlan(const core::World& world, const core::RobotSet& robots, const cor
   while (executor.planTime() < end) {
     executor.step();
     monitor.observe(executor);
-    if (options.on_step) options.on_step(sim, executor.planTime());
+    if (options.on_step) options.on_step(sim, executor.planTime(), monitor);
   }
   Report report = monitor.finish(executor);
   report.plan_file = plan_file;

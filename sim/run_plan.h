@@ -6,6 +6,7 @@
 
 #include "core/plan.h"
 #include "core/robot_set.h"
+#include "sim/monitor.h"
 #include "sim/report.h"
 #include "sim/simulation.h"
 
@@ -15,8 +16,9 @@ struct RunOptions {
   /// Simulated time after the plan's end, so the last placement can settle and be judged [s].
   /// Default: the world's checks.settle_time + 0.5 s.
   double tail_time = -1.0;
-  /// Called after every step with the simulation and the plan time (renderers hook in here).
-  std::function<void(const Simulation&, double plan_time)> on_step;
+  /// Called after every step with the simulation, the plan time and the monitor (renderers
+  /// hook in here).
+  std::function<void(const Simulation&, double plan_time, const Monitor&)> on_step;
 };
 
 /// core::validatePlan with the arm joint names, limits and speeds of the world's robot model.

@@ -20,6 +20,7 @@
 #include "tools/cli_support.h"
 #include "tools/sequential_plan.h"
 #include "tools/sim_output.h"
+#include "tools/video_output.h"
 
 namespace dashbed::tools {
 namespace {
@@ -30,6 +31,7 @@ struct RunOptions {
   bool validate_only = false;
   std::string plan_out;
   ReportOutputs outputs;
+  VideoOptions video;
 };
 
 std::string robotNames(const core::World& world, const std::vector<int>& robots) {
@@ -126,8 +128,8 @@ void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options)
   std::cout << "plan: " << plan.actions.size() << " actions, " << std::fixed << std::setprecision(2)
             << plan.duration() << " s\n\nsimulating and checking...\n";
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, "plan");
-  const sim::Report report = sim::runPlan(*loaded.world, *loaded.robots, plan,
-                                          options.plan_out.empty() ? "plan" : options.plan_out);
+  const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan,
+                                              options.plan_out.empty() ? "plan" : options.plan_out, options.video);
   writeReportOutputs(report, options.outputs);
   if (!report.passed()) throw CLI::RuntimeError(kExitCheckFailed);
 }
@@ -153,6 +155,7 @@ void addRunCommand(CLI::App& app) {
   run->add_flag("--json", options->json, "print the world summary as JSON and stop");
   run->add_option("--plan-out", options->plan_out, "write the plan here (JSON)");
   addReportOptions(*run, options->outputs);
+  addVideoOptions(*run, options->video, /*with_out_dir=*/false);
   run->callback([options] { runGuarded("run", [&] { runJob(*options); }); });
 }
 

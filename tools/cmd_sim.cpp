@@ -7,6 +7,7 @@
 #include "sim/run_plan.h"
 #include "tools/cli_support.h"
 #include "tools/sim_output.h"
+#include "tools/video_output.h"
 
 namespace dashbed::tools {
 namespace {
@@ -15,6 +16,7 @@ struct SimOptions {
   std::string plan_file;
   std::string world_file;
   ReportOutputs outputs;
+  VideoOptions video;
 };
 
 void runSim(const SimOptions& options) {
@@ -23,7 +25,7 @@ void runSim(const SimOptions& options) {
   const core::LoadedWorld loaded = core::loadWorld(world_path);
   const core::Plan plan = core::loadPlanFile(options.plan_file);
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, options.plan_file);
-  const sim::Report report = sim::runPlan(*loaded.world, *loaded.robots, plan, options.plan_file);
+  const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan, options.plan_file, options.video);
   writeReportOutputs(report, options.outputs);
   if (!report.passed()) throw CLI::RuntimeError(kExitCheckFailed);
 }
@@ -38,6 +40,7 @@ void addSimCommand(CLI::App& app) {
   sim->add_option("plan", options->plan_file, "plan file (JSON)")->required();
   sim->add_option("--world", options->world_file, "world file (default: worlds/default.yaml)");
   addReportOptions(*sim, options->outputs);
+  addVideoOptions(*sim, options->video, /*with_out_dir=*/false);
   sim->callback([options] { runGuarded("sim", [&] { runSim(*options); }); });
 }
 

@@ -22,6 +22,7 @@ void addGenCommand(CLI::App& app);
 void addKinCommand(CLI::App& app);
 void addScriptCommand(CLI::App& app);
 void addSimCommand(CLI::App& app);
+void addRenderCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addGraphCommand(CLI::App& app);
 

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   addKinCommand(app);
   addScriptCommand(app);
   addSimCommand(app);
+  addRenderCommand(app);
   addBenchCommand(app);
   addGraphCommand(app);
   try {

@@ -22,6 +22,10 @@ packages=(
   libyaml-cpp-dev                           # world files
   nlohmann-json3-dev                        # plans, reports, --json
   libcli11-dev                              # command line
+  libbullet-dev                             # physics (the double-precision bullet-float64 build)
+  libfcl-dev                                # planner collision checking
+  libosmesa6-dev libpng-dev                 # offscreen rendering, PNG frames
+  ffmpeg                                    # MP4 video (ffprobe in the tests)
   catch2                                    # tests (Catch2 v2)
 )
 missing=()

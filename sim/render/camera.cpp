@@ -1,6 +1,7 @@
 #include "sim/render/camera.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
@@ -103,6 +104,13 @@ Eigen::AlignedBox3d worldBounds(const core::World& world) {
     extendByBox(bounds, X_WC, Eigen::Vector3d(0.9, 0.9, 0.85));
   }
   if (bounds.isEmpty()) bounds.extend(Eigen::Vector3d::Zero());
+  // frame the workspace, not the legs of the table the robots stand on: cut the box 15 cm
+  // below the lowest robot base
+  if (!world.robots.empty()) {
+    double lowest_base = 1e300;
+    for (const core::RobotSpec& robot : world.robots) lowest_base = std::min(lowest_base, robot.X_WBase.translation().z());
+    bounds.min().z() = std::min(bounds.max().z(), std::max(bounds.min().z(), lowest_base - 0.15));
+  }
   return bounds;
 }
 

@@ -33,10 +33,6 @@ FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& rob
 
 FrameRecorder::~FrameRecorder() = default;
 
-std::function<void(const sim::Simulation&, double)> FrameRecorder::hook() {
-  return [this](const sim::Simulation& simulation, double plan_time) { onStep(simulation, plan_time); };
-}
-
 void FrameRecorder::onStep(const sim::Simulation& simulation, double plan_time) {
   // frame k belongs to plan time k / fps; the tolerance absorbs the rounding of summed steps
   const auto due = [&](int k) { return k / settings_.fps <= plan_time + 1e-9; };

@@ -4,7 +4,7 @@
 //
 //   render::FrameRecorder recorder(world, robots, settings);
 //   sim::RunOptions options;
-//   options.on_step = recorder.hook();
+//   options.on_step = [&](const sim::Simulation& s, double t, const sim::Monitor&) { recorder.onStep(s, t); };
 //   sim::runPlan(world, robots, plan, plan_file, options);
 //   recorder.finish();
 
@@ -56,9 +56,6 @@ class FrameRecorder {
   /// frames depend only on the simulation and the plan times passed.
   void onStep(const sim::Simulation& simulation, double plan_time);
 
-  /// A callable for sim::RunOptions::on_step that forwards to onStep; the recorder must
-  /// outlive it.
-  std::function<void(const sim::Simulation&, double)> hook();
 
   /// Finishes the video (throws std::runtime_error if ffmpeg failed). Calling it again does
   /// nothing.

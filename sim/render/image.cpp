@@ -47,10 +47,10 @@ bool encodePng(std::FILE* out, const Image& image, PngErrorState& error) {
   }
   png_init_io(png, out);
   // fixed settings, so the bytes depend on the pixels only (libpng writes no time stamp
-  // unless asked); level 3 with the SUB and UP filters is several times faster than the
-  // defaults at a similar size for rendered frames
-  png_set_compression_level(png, 3);
-  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_SUB | PNG_FILTER_UP);
+  // unless asked); for rendered frames (large flat areas) zlib level 2 without row filters
+  // is about six times faster than libpng's defaults for a file about 10 % larger
+  png_set_compression_level(png, 2);
+  png_set_filter(png, PNG_FILTER_TYPE_BASE, PNG_FILTER_NONE);
   png_set_IHDR(png, info, static_cast<png_uint_32>(image.width), static_cast<png_uint_32>(image.height), 8,
                PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_BASE, PNG_FILTER_TYPE_BASE);
   png_write_info(png, info);
@@ -106,14 +106,16 @@ bool decodePng(std::FILE* in, Image& image, std::vector<png_bytep>& rows, PngErr
 
 }  // namespace
 
-Image::Image(int w, int h, std::uint8_t r, std::uint8_t g, std::uint8_t b) : width(w), height(h) {
-  if (w < 0 || h < 0) throw std::invalid_argument("Image: negative size");
-  rgb.resize(static_cast<std::size_t>(w) * h * 3);
-  for (std::size_t i = 0; i < rgb.size(); i += 3) {
-    rgb[i] = r;
-    rgb[i + 1] = g;
-    rgb[i + 2] = b;
+Image Image::filled(int width, int height, std::uint8_t r, std::uint8_t g, std::uint8_t b) {
+  if (width < 0 || height < 0) throw std::invalid_argument("Image::filled: negative size");
+  Image image{width, height, {}};
+  image.rgb.resize(static_cast<std::size_t>(width) * height * 3);
+  for (std::size_t i = 0; i < image.rgb.size(); i += 3) {
+    image.rgb[i] = r;
+    image.rgb[i + 1] = g;
+    image.rgb[i + 2] = b;
   }
+  return image;
 }
 
 void writePng(const Image& image, const std::filesystem::path& file) {

@@ -13,9 +13,9 @@ struct Image {
   int height = 0;
   std::vector<std::uint8_t> rgb;  ///< width * height * 3 bytes
 
-  Image() = default;
-  /// A width x height image filled with one colour.
-  Image(int w, int h, std::uint8_t r = 0, std::uint8_t g = 0, std::uint8_t b = 0);
+  /// A width x height image filled with one colour. Throws std::invalid_argument for a
+  /// negative size.
+  static Image filled(int width, int height, std::uint8_t r = 0, std::uint8_t g = 0, std::uint8_t b = 0);
 
   /// Pointer to the three bytes of pixel (x, y), x to the right, y down. No bounds check.
   std::uint8_t* pixel(int x, int y) { return rgb.data() + (static_cast<std::size_t>(y) * width + x) * 3; }

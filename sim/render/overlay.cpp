@@ -8,8 +8,10 @@ namespace dashbed::render {
 namespace {
 
 // The 5x7 font, one glyph per printable ASCII character from ' ' (32) to '~' (126); each
-// glyph is 7 rows of 5 columns, '#' marks a lit pixel.
+// glyph is 7 rows of 5 columns, '#' marks a lit pixel. Lower-case letters sit on rows 2-6;
+// those with descenders (kDescending) are drawn two rows lower, into the line spacing.
 constexpr int kFirstGlyph = 32;
+constexpr std::string_view kDescending = "gpqy";
 constexpr int kLastGlyph = 126;
 constexpr const char* kGlyphs[kLastGlyph - kFirstGlyph + 1][7] = {
     {".....", ".....", ".....", ".....", ".....", ".....", "....."},  // ' '
@@ -83,7 +85,7 @@ constexpr const char* kGlyphs[kLastGlyph - kFirstGlyph + 1][7] = {
     {"....#", "....#", ".##.#", "#..##", "#...#", "#...#", ".####"},  // d
     {".....", ".....", ".###.", "#...#", "#####", "#....", ".###."},  // e
     {"..##.", ".#..#", ".#...", "###..", ".#...", ".#...", ".#..."},  // f
-    {".....", ".####", "#...#", "#...#", ".####", "....#", ".###."},  // g
+    {".####", "#...#", "#...#", ".####", "....#", "....#", ".###."},  // g (descends)
     {"#....", "#....", "#.##.", "##..#", "#...#", "#...#", "#...#"},  // h
     {"..#..", ".....", ".##..", "..#..", "..#..", "..#..", ".###."},  // i
     {"...#.", ".....", "..##.", "...#.", "...#.", "#..#.", ".##.."},  // j
@@ -92,8 +94,8 @@ constexpr const char* kGlyphs[kLastGlyph - kFirstGlyph + 1][7] = {
     {".....", ".....", "##.#.", "#.#.#", "#.#.#", "#...#", "#...#"},  // m
     {".....", ".....", "#.##.", "##..#", "#...#", "#...#", "#...#"},  // n
     {".....", ".....", ".###.", "#...#", "#...#", "#...#", ".###."},  // o
-    {".....", ".....", "####.", "#...#", "####.", "#....", "#...."},  // p
-    {".....", ".....", ".##.#", "#..##", ".####", "....#", "....#"},  // q
+    {"####.", "#...#", "#...#", "####.", "#....", "#....", "#...."},  // p (descends)
+    {".####", "#...#", "#...#", ".####", "....#", "....#", "....#"},  // q (descends)
     {".....", ".....", "#.##.", "##..#", "#....", "#....", "#...."},  // r
     {".....", ".....", ".###.", "#....", ".###.", "....#", "####."},  // s
     {".#...", ".#...", "###..", ".#...", ".#...", ".#..#", "..##."},  // t
@@ -101,7 +103,7 @@ constexpr const char* kGlyphs[kLastGlyph - kFirstGlyph + 1][7] = {
     {".....", ".....", "#...#", "#...#", "#...#", ".#.#.", "..#.."},  // v
     {".....", ".....", "#...#", "#...#", "#.#.#", "#.#.#", ".#.#."},  // w
     {".....", ".....", "#...#", ".#.#.", "..#..", ".#.#.", "#...#"},  // x
-    {".....", ".....", "#...#", "#...#", ".####", "....#", ".###."},  // y
+    {"#...#", "#...#", "#...#", ".####", "....#", "#...#", ".###."},  // y (descends)
     {".....", ".....", "#####", "...#.", "..#..", ".#...", "#####"},  // z
     {"...#.", "..#..", "..#..", ".#...", "..#..", "..#..", "...#."},  // {
     {"..#..", "..#..", "..#..", "..#..", "..#..", "..#..", "..#.."},  // |
@@ -154,6 +156,7 @@ void drawRing(Image& image, double cx, double cy, double radius, double thicknes
 }
 
 constexpr int kScale = 2;
+constexpr int kGlyphRows = 9;    // 7 rows and 2 for descenders
 constexpr int kMargin = 6;       // from the image border [px]
 constexpr int kPad = 3;          // band around text [px]
 constexpr double kMarkerRadius = 14.0;
@@ -186,11 +189,12 @@ void drawText(Image& image, int x, int y, std::string_view text, const core::Col
     if (code < kFirstGlyph || code > kLastGlyph) code = '?';
     const auto& glyph = kGlyphs[code - kFirstGlyph];
     const int gx = x + static_cast<int>(i) * kGlyphCellWidth * scale;
+    const int gy = y + (kDescending.find(static_cast<char>(code)) != std::string_view::npos ? 2 * scale : 0);
     for (int row = 0; row < 7; ++row) {
       for (int col = 0; col < 5; ++col) {
         if (glyph[row][col] != '#') continue;
         for (int sy = 0; sy < scale; ++sy) {
-          for (int sx = 0; sx < scale; ++sx) setPixel(image, gx + col * scale + sx, y + row * scale + sy, c);
+          for (int sx = 0; sx < scale; ++sx) setPixel(image, gx + col * scale + sx, gy + row * scale + sy, c);
         }
       }
     }
@@ -198,13 +202,13 @@ void drawText(Image& image, int x, int y, std::string_view text, const core::Col
 }
 
 void drawOverlays(Image& image, const Camera& camera, const std::vector<Overlay>& overlays) {
-  const int line_height = kGlyphCellHeight * kScale + 2 * kPad - 2;
+  const int line_height = kGlyphRows * kScale + 2 * kPad;
   int line = 0;
   for (const Overlay& overlay : overlays) {
     if (overlay.kind != Overlay::kText) continue;
     const int y = kMargin + line * line_height;
     darkenRect(image, kMargin - kPad, y - kPad, kMargin + textWidth(overlay.text, kScale) + kPad,
-               y + 7 * kScale + kPad);
+               y + kGlyphRows * kScale + kPad);
     drawText(image, kMargin, y, overlay.text, overlay.color, kScale);
     ++line;
   }
@@ -227,7 +231,7 @@ void drawOverlays(Image& image, const Camera& camera, const std::vector<Overlay>
       int tx = static_cast<int>(std::lround(p.x() + kMarkerRadius + 6.0));
       if (tx + width + kPad > image.width) tx = static_cast<int>(std::lround(p.x() - kMarkerRadius - 6.0)) - width;
       const int ty = static_cast<int>(std::lround(p.y())) - 7 * kScale / 2;
-      darkenRect(image, tx - kPad, ty - kPad, tx + width + kPad, ty + 7 * kScale + kPad);
+      darkenRect(image, tx - kPad, ty - kPad, tx + width + kPad, ty + kGlyphRows * kScale + kPad);
       drawText(image, tx, ty, overlay.text, overlay.color, kScale);
     }
   }

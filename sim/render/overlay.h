@@ -29,7 +29,8 @@ Overlay textOverlay(std::string text, core::Color color = {1.0, 1.0, 1.0});
 /// A marker: a circle around the projection of p_W with `label` beside it (red by default).
 Overlay markerOverlay(const Eigen::Vector3d& p_W, std::string label, core::Color color = {0.9, 0.05, 0.05});
 
-/// Pixel size of the font at scale 1: each glyph cell is 6 x 9 pixels (5 x 7 glyph + spacing).
+/// Pixel size of the font at scale 1: each glyph cell is 6 x 9 pixels (5 x 7 glyph, spacing,
+/// and two rows below for the descenders of g, p, q, y).
 inline constexpr int kGlyphCellWidth = 6;
 inline constexpr int kGlyphCellHeight = 9;
 

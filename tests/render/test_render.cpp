@@ -118,6 +118,26 @@ TEST_CASE("The default world renders non-blank from every preset", "[render]") {
   }
 }
 
+TEST_CASE("A world with one object and nothing else renders it", "[render]") {
+  core::World world;
+  world.name = "one_cube";
+  core::ObjectSpec cube;
+  cube.name = "cube";
+  cube.size = Eigen::Vector3d(0.2, 0.2, 0.2);
+  cube.color = {0.1, 0.2, 0.9};
+  cube.X_WO = core::makePoseXyzYaw(Eigen::Vector3d(1.0, 2.0, 0.1), 0.3);
+  world.objects.push_back(cube);
+  const core::RobotSet robots(world);
+  render::SceneRenderer dut(world, robots);
+  for (const std::string& preset : render::cameraPresetNames(world)) {
+    const render::Camera camera = render::cameraPreset(world, preset, 160, 120);
+    const render::Image image = dut.render(render::sceneAtHome(world, robots), camera);
+    const Rgb centre = pixelAt(image, 80, 60);  // the cube is the whole world: it is in the middle
+    INFO("preset " << preset << ": " << centre.r << " " << centre.g << " " << centre.b);
+    CHECK((centre.b > 2 * centre.r && centre.b > 100));
+  }
+}
+
 TEST_CASE("Robot pixels appear where each TCP projects", "[render]") {
   const auto& [world, robots, reach] = defaultWorld();
   render::SceneRenderer dut(*world, *robots);
@@ -348,7 +368,7 @@ TEST_CASE("Overlays draw text at the top left and a ring around a marked point",
   CHECK(std::equal(plain.pixel(cx, cy), plain.pixel(cx, cy) + 3, marked.pixel(cx, cy)));
 
   // a marker behind the camera stays in the image (pinned to the bottom edge)
-  render::Image image(100, 80, 50, 50, 50);
+  render::Image image = render::Image::filled(100, 80, 50, 50, 50);
   render::drawOverlays(image, camera, {render::markerOverlay(camera.eye - (camera.target - camera.eye), "")});
   int red = 0;
   for (int y = 0; y < image.height; ++y) {
@@ -384,7 +404,7 @@ TEST_CASE("Video: 30 frames make an MP4 of 30 frames", "[render][video]") {
   CHECK(dut.frameCount() == 30);
   REQUIRE(std::filesystem::exists(mp4));
   CHECK(std::filesystem::file_size(mp4) > 1000);
-  CHECK_THROWS_AS(dut.add(render::Image(320, 240)), std::runtime_error);  // after finish
+  CHECK_THROWS_AS(dut.add(render::Image::filled(320, 240)), std::runtime_error);  // after finish
   CHECK_THROWS_AS(render::VideoWriter(dir.path / "odd.mp4", 321, 240, 30.0), std::invalid_argument);
 
   if (!render::ffprobeAvailable()) {
@@ -411,7 +431,7 @@ TEST_CASE("Video: a missing ffmpeg or a failing ffmpeg is a clear error", "[rend
     render::VideoWriter writer(dir.path / "missing" / "x.mp4", 64, 48, 30.0);
     bool threw = false;
     try {
-      for (int k = 0; k < 5; ++k) writer.add(render::Image(64, 48, 10, 20, 30));
+      for (int k = 0; k < 5; ++k) writer.add(render::Image::filled(64, 48, 10, 20, 30));
       writer.finish();
     } catch (const std::runtime_error& e) {
       threw = true;
@@ -436,13 +456,12 @@ TEST_CASE("FrameRecorder writes one frame per 1/fps of plan time", "[render]") {
   };
   render::FrameRecorder dut(*world, *robots, settings);
   sim::Simulation simulation(*world, *robots);
-  const auto hook = dut.hook();
-  hook(simulation, -0.2);  // settle pre-roll: ignored
+  dut.onStep(simulation, -0.2);  // settle pre-roll: ignored
   CHECK(dut.framesWritten() == 0);
   // 0.1 s of plan time at 1 kHz: frames at 0, 1/30, 2/30 and 3/30 s
   for (int step = 0; step < 100; ++step) {
     simulation.step();
-    hook(simulation, (step + 1) * simulation.timeStep());
+    dut.onStep(simulation, (step + 1) * simulation.timeStep());
   }
   dut.finish();
   CHECK(dut.framesWritten() == 4);

@@ -1,0 +1,50 @@
+#pragma once
+// Frames and video of simulated runs, shared by the commands that simulate (render, run, sim).
+
+#include <memory>
+#include <string>
+
+#include <CLI/CLI.hpp>
+
+#include "core/plan.h"
+#include "core/robot_set.h"
+#include "sim/render/frame_recorder.h"
+#include "sim/run_plan.h"
+
+namespace dashbed::tools {
+
+struct VideoOptions {
+  std::string frames_dir;        ///< --out: PNG frames
+  std::string video;             ///< --video: MP4
+  std::string camera = "oblique";
+  double fps = 30.0;
+  int width = 640;
+  int height = 480;
+  bool wanted() const { return !frames_dir.empty() || !video.empty(); }
+};
+
+/// --video, --camera, --fps, --size (and --out when `with_out_dir`).
+void addVideoOptions(CLI::App& command, VideoOptions& options, bool with_out_dir);
+
+/// A recorder for the run of `plan` whose overlays show the simulated time, the actions in
+/// progress and a red marker where each failed check happened (for a second after it).
+/// `plan` must outlive it. Call attach() on the run options before running.
+class RunRecorder {
+ public:
+  RunRecorder(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
+              const VideoOptions& options);
+  void attach(sim::RunOptions& run_options);
+  void finish();
+  int framesWritten() const { return recorder_->framesWritten(); }
+
+ private:
+  const core::Plan& plan_;
+  const sim::Monitor* monitor_ = nullptr;
+  std::unique_ptr<render::FrameRecorder> recorder_;
+};
+
+/// sim::runPlan, recording frames and video when `video` asks for them.
+sim::Report simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
+                              const std::string& plan_file, const VideoOptions& video);
+
+}  // namespace dashbed::tools
