@@ -11,7 +11,8 @@ build_dir="$root/build"
 cmake_args=(-DCMAKE_BUILD_TYPE=Release)
 if [[ "${1:-}" == "--sanitize" ]]; then
   build_dir="$root/build-asan"
-  cmake_args=(-DCMAKE_BUILD_TYPE=RelWithDebInfo -DDASHBED_SANITIZE=ON)
+  # -O1 with line tables: readable sanitizer reports at a fraction of -O2 -g's compile time
+  cmake_args=(-DCMAKE_BUILD_TYPE=None "-DCMAKE_CXX_FLAGS=-O1 -g1" -DDASHBED_SANITIZE=ON)
 fi
 
 packages=(
