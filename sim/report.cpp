@@ -264,6 +264,15 @@ Report readReport(const Reader& reader, const Json& document) {
     event.kind = reader.string(events[i], pointer, "kind");
     event.detail = reader.string(events[i], pointer, "detail");
     event.action = reader.string(events[i], pointer, "action");
+    if (events[i].contains("still")) event.still = reader.string(events[i], pointer, "still");
+    if (events[i].contains("where")) {
+      const Json& where = reader.array(events[i], pointer, "where");
+      if (where.size() != 3) reader.fail(pointerAt(pointer, "where"), "expected 3 numbers");
+      for (int k = 0; k < 3; ++k) {
+        if (!where[static_cast<std::size_t>(k)].is_number()) reader.fail(pointerAt(pointer, "where"), "expected 3 numbers");
+        event.where_W[k] = where[static_cast<std::size_t>(k)].get<double>();
+      }
+    }
     report.events.push_back(std::move(event));
   }
   const Json& robots = reader.array(document, "", "robots");
@@ -276,6 +285,8 @@ Report readReport(const Reader& reader, const Json& document) {
     robot.max_effort_ratio = reader.number(robots[i], pointer, "max_effort_ratio");
     report.robots.push_back(std::move(robot));
   }
+
+  if (document.contains("final_still")) report.final_still = reader.string(document, "", "final_still");
 
   // the summary: the execution verdict lives there; the counts must agree with the actions
   const Json& summary = reader.field(document, "", "summary");
@@ -478,6 +489,8 @@ std::string writeReportJson(const Report& report) {
     json["kind"] = event.kind;
     json["detail"] = event.detail;
     json["action"] = event.action;
+    json["where"] = {number(event.where_W.x()), number(event.where_W.y()), number(event.where_W.z())};
+    json["still"] = event.still;
     events.push_back(std::move(json));
   }
   document["events"] = std::move(events);
@@ -492,6 +505,7 @@ std::string writeReportJson(const Report& report) {
     robots.push_back(std::move(json));
   }
   document["robots"] = std::move(robots);
+  document["final_still"] = report.final_still;
   return core::formatJson(document);
 }
 

@@ -59,6 +59,7 @@ struct ExecutionEvent {
   std::string detail;      ///< bodies involved, with the action in progress
   std::string action;      ///< id of the action it is attributed to, or ""
   Eigen::Vector3d where_W = Eigen::Vector3d::Zero();  ///< where it happened (world) [m]
+  std::string still;       ///< PNG of the scene when it happened, with a marker ("" if none)
 };
 
 /// Per-robot execution quality.
@@ -80,6 +81,7 @@ struct Report {
   std::vector<RobotExecution> robots;
   Verdict execution_verdict = Verdict::kPassed;  ///< unplanned contacts and tracking limits
   std::string execution_failure;
+  std::string final_still;       ///< PNG of the final state ("" if none was rendered)
 
   int passedCount() const;
   int failedCount() const;

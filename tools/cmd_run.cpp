@@ -129,7 +129,8 @@ void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options)
             << plan.duration() << " s\n\nsimulating and checking...\n";
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, "plan");
   const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan,
-                                              options.plan_out.empty() ? "plan" : options.plan_out, options.video);
+                                              options.plan_out.empty() ? "plan" : options.plan_out, options.video,
+                                              stillsDirectory(options.outputs));
   writeReportOutputs(report, options.outputs);
   if (!report.passed()) throw CLI::RuntimeError(kExitCheckFailed);
 }

@@ -25,7 +25,8 @@ void runSim(const SimOptions& options) {
   const core::LoadedWorld loaded = core::loadWorld(world_path);
   const core::Plan plan = core::loadPlanFile(options.plan_file);
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, options.plan_file);
-  const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan, options.plan_file, options.video);
+  const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan, options.plan_file, options.video,
+                                                    stillsDirectory(options.outputs));
   writeReportOutputs(report, options.outputs);
   if (!report.passed()) throw CLI::RuntimeError(kExitCheckFailed);
 }

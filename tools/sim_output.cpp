@@ -1,5 +1,6 @@
 #include "tools/sim_output.h"
 
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <iostream>
@@ -20,6 +21,11 @@ void addReportOptions(CLI::App& command, ReportOutputs& outputs) {
   command.add_option("--report", outputs.json_file, "write the JSON report here");
   command.add_option("--junit", outputs.junit_file, "write a JUnit XML report here");
   command.add_flag("--quiet", outputs.quiet, "print only the verdict");
+}
+
+std::string stillsDirectory(const ReportOutputs& outputs) {
+  if (outputs.json_file.empty()) return "";
+  return std::filesystem::path(outputs.json_file).replace_extension(".stills").string();
 }
 
 void writeReportOutputs(const sim::Report& report, const ReportOutputs& outputs) {

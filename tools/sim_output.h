@@ -18,6 +18,9 @@ struct ReportOutputs {
 
 void addReportOptions(CLI::App& command, ReportOutputs& outputs);
 
+/// Where the stills of a report go: beside --report FILE.json as FILE.stills/ ("" without --report).
+std::string stillsDirectory(const ReportOutputs& outputs);
+
 /// Prints the summary (one line per action, then the verdict) and writes the files asked for.
 /// Throws std::runtime_error when a file cannot be written.
 void writeReportOutputs(const sim::Report& report, const ReportOutputs& outputs);

@@ -1,8 +1,16 @@
 #include "tools/video_output.h"
 
+#include <algorithm>
+#include <filesystem>
 #include <iostream>
+#include <optional>
+#include <iomanip>
+#include <sstream>
 
+#include "sim/render/camera.h"
+#include "sim/render/image.h"
 #include "sim/render/overlay.h"
+#include "sim/render/scene_state.h"
 
 namespace dashbed::tools {
 namespace {
@@ -66,16 +74,85 @@ void RunRecorder::attach(sim::RunOptions& run_options) {
 
 void RunRecorder::finish() { recorder_->finish(); }
 
+namespace {
+
+/// Renders a still for each new monitor event (with its marker) and one of the final state.
+class StillRecorder {
+ public:
+  StillRecorder(const core::World& world, const core::RobotSet& robots, std::filesystem::path dir)
+      : dir_(std::move(dir)), renderer_(world, robots), camera_(render::cameraPreset(world, "oblique", 640, 480)) {
+    std::filesystem::create_directories(dir_);
+  }
+
+  void onStep(const sim::Simulation& simulation, double plan_time, const sim::Monitor& monitor) {
+    last_state_ = render::captureScene(simulation);
+    const auto& events = monitor.events();
+    for (; stills_.size() < events.size();) {
+      const sim::ExecutionEvent& event = events[stills_.size()];
+      std::ostringstream time;
+      time << "t = " << std::fixed << std::setprecision(3) << plan_time << " s";
+      const std::vector<render::Overlay> overlays{render::textOverlay(time.str()),
+                                                  render::textOverlay(event.kind + ": " + event.detail, {1.0, 0.3, 0.3}),
+                                                  render::markerOverlay(event.where_W, event.kind)};
+      std::string name = "event_" + std::to_string(stills_.size() + 1) + "_" + event.kind + ".png";
+      std::replace(name.begin(), name.end(), ' ', '_');
+      render::writePng(renderer_.render(last_state_, camera_, overlays), dir_ / name);
+      stills_.push_back({event.t, event.kind, event.detail, (dir_ / name).string()});
+    }
+  }
+
+  /// Renders the final state and writes the still files into the report.
+  void finish(sim::Report& report) {
+    const std::filesystem::path final_file = dir_ / "final.png";
+    render::writePng(renderer_.render(last_state_, camera_, {render::textOverlay("final state")}), final_file);
+    report.final_still = final_file.string();
+    // the report's events are the monitor's sorted by time: match them back by content
+    for (const Still& still : stills_) {
+      for (sim::ExecutionEvent& event : report.events) {
+        if (event.still.empty() && event.t == still.t && event.kind == still.kind && event.detail == still.detail) {
+          event.still = still.file;
+          break;
+        }
+      }
+    }
+  }
+
+ private:
+  struct Still {
+    double t;
+    std::string kind, detail, file;
+  };
+  std::filesystem::path dir_;
+  render::SceneRenderer renderer_;
+  render::Camera camera_;
+  render::SceneState last_state_;
+  std::vector<Still> stills_;
+};
+
+}  // namespace
+
 sim::Report simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
-                              const std::string& plan_file, const VideoOptions& video) {
-  if (!video.wanted()) return sim::runPlan(world, robots, plan, plan_file);
-  RunRecorder recorder(world, robots, plan, video);
+                              const std::string& plan_file, const VideoOptions& video, const std::string& stills_dir) {
+  std::optional<RunRecorder> recorder;
+  if (video.wanted()) recorder.emplace(world, robots, plan, video);
+  std::optional<StillRecorder> stills;
+  if (!stills_dir.empty()) stills.emplace(world, robots, stills_dir);
   sim::RunOptions options;
-  recorder.attach(options);
+  if (recorder) recorder->attach(options);
+  if (stills) {
+    auto frames = options.on_step;
+    options.on_step = [&, frames](const sim::Simulation& simulation, double plan_time, const sim::Monitor& monitor) {
+      if (frames) frames(simulation, plan_time, monitor);
+      stills->onStep(simulation, plan_time, monitor);
+    };
+  }
   sim::Report report = sim::runPlan(world, robots, plan, plan_file, options);
-  recorder.finish();
-  std::cout << "recorded " << recorder.framesWritten() << " frames"
-            << (video.video.empty() ? "" : " to " + video.video) << "\n";
+  if (recorder) {
+    recorder->finish();
+    std::cout << "recorded " << recorder->framesWritten() << " frames"
+              << (video.video.empty() ? "" : " to " + video.video) << "\n";
+  }
+  if (stills) stills->finish(report);
   return report;
 }
 

@@ -43,8 +43,11 @@ class RunRecorder {
   std::unique_ptr<render::FrameRecorder> recorder_;
 };
 
-/// sim::runPlan, recording frames and video when `video` asks for them.
+/// sim::runPlan, recording frames and video when `video` asks for them, and, when
+/// `stills_dir` is not empty, a still of every failed check as it happens (with a marker where
+/// it happened) and of the final state there, referenced from the report.
 sim::Report simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
-                              const std::string& plan_file, const VideoOptions& video);
+                              const std::string& plan_file, const VideoOptions& video,
+                              const std::string& stills_dir = "");
 
 }  // namespace dashbed::tools

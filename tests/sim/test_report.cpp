@@ -208,8 +208,8 @@ Report sampleReport() {
   report.actions.push_back(place);
 
   report.events.push_back({4.2, "robot-robot contact", "r0/wrist_3_link <-> r1/\"finger\" & 'pad'",
-                           "handoff cube_0 from r0 to r1"});
-  report.events.push_back({5.125, "drop", "cube_0 hit table", ""});
+                           "handoff cube_0 from r0 to r1", Eigen::Vector3d(0.1, -0.2, 1.05), "stills/event_1.png"});
+  report.events.push_back({5.125, "drop", "cube_0 hit table", "", Eigen::Vector3d::Zero(), ""});
   report.robots.push_back({"r0", 0.0123, 0.0, 0.61});
   report.robots.push_back({"r1", 0.0456, 0.002, 1.0});
   report.execution_verdict = Verdict::kFailed;
@@ -272,7 +272,10 @@ void requireSameReport(const Report& a, const Report& b) {
     REQUIRE(a.events[i].kind == b.events[i].kind);
     REQUIRE(a.events[i].detail == b.events[i].detail);
     REQUIRE(a.events[i].action == b.events[i].action);
+    REQUIRE(a.events[i].still == b.events[i].still);
+    for (int k = 0; k < 3; ++k) REQUIRE(same(a.events[i].where_W[k], b.events[i].where_W[k]));
   }
+  REQUIRE(a.final_still == b.final_still);
   REQUIRE(a.robots.size() == b.robots.size());
   for (std::size_t i = 0; i < a.robots.size(); ++i) {
     REQUIRE(a.robots[i].robot == b.robots[i].robot);
