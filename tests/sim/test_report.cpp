@@ -321,7 +321,7 @@ TEST_CASE("JSON report: layout, summary and nulls", "[report]") {
   for (const auto& [key, value] : json.items()) keys.push_back(key);
   CHECK(keys == std::vector<std::string>{"dashbed_report", "world", "plan", "seed", "time_step",
                                          "simulated_time", "summary", "actions", "events",
-                                         "robots"});
+                                         "robots", "final_still"});
   CHECK(json["dashbed_report"] == 1);
   CHECK(json["summary"]["actions"] == 3);
   CHECK(json["summary"]["passed"] == 1);
