@@ -89,7 +89,9 @@ double depthInCamera(const Camera& camera, const Eigen::Vector3d& p_W) {
 
 Eigen::AlignedBox3d worldBounds(const core::World& world) {
   Eigen::AlignedBox3d bounds;
+  // with robots, frame the workspace: bins and shelves but not the tables they stand on
   for (const core::FixtureSpec& fixture : world.fixtures) {
+    if (!world.robots.empty() && fixture.type == core::FixtureType::kBox) continue;
     for (const core::Box& box : fixture.boxes) extendByBox(bounds, box.X_WB, box.size);
   }
   for (const core::ObjectSpec& object : world.objects) extendByBox(bounds, object.X_WO, object.size);
