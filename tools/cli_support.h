@@ -12,7 +12,8 @@
 namespace dashbed::tools {
 
 /// Runs `f`; bad input (WorldError, runtime_error from files) prints "dashbed WHAT: message"
-/// and exits with kExitBadInput. CLI11 errors (including RuntimeError exit codes) pass through.
+/// and exits with kExitBadInput; a bad option value (std::invalid_argument) exits with
+/// kExitUsage. CLI11 errors (including RuntimeError exit codes) pass through.
 template <typename F>
 void runGuarded(const char* what, F&& f) {
   try {
@@ -22,6 +23,9 @@ void runGuarded(const char* what, F&& f) {
   } catch (const std::runtime_error& e) {
     std::cerr << "dashbed " << what << ": " << e.what() << "\n";
     throw CLI::RuntimeError(kExitBadInput);
+  } catch (const std::invalid_argument& e) {
+    std::cerr << "dashbed " << what << ": " << e.what() << "\n";
+    throw CLI::RuntimeError(kExitUsage);
   }
 }
 

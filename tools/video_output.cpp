@@ -36,6 +36,11 @@ void addVideoOptions(CLI::App& command, VideoOptions& options, bool with_out_dir
   command.add_option("--fps", options.fps, "frames per second of simulated time")->capture_default_str();
   command.add_option("--width", options.width, "image width [px]")->capture_default_str();
   command.add_option("--height", options.height, "image height [px]")->capture_default_str();
+  auto* eye = command.add_option("--eye", options.eye, "custom camera position X Y Z [m] (world)")->expected(3);
+  auto* target = command.add_option("--target", options.target, "custom camera target X Y Z [m] (world)")->expected(3);
+  eye->needs(target);
+  target->needs(eye);
+  command.add_option("--fov", options.fov_deg, "custom camera vertical field of view [deg]")->capture_default_str();
 }
 
 RunRecorder::RunRecorder(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
@@ -46,6 +51,16 @@ RunRecorder::RunRecorder(const core::World& world, const core::RobotSet& robots,
   settings.camera_preset = options.camera;
   settings.width = options.width;
   settings.height = options.height;
+  if (!options.eye.empty()) {
+    render::Camera camera;
+    camera.eye = Eigen::Vector3d(options.eye[0], options.eye[1], options.eye[2]);
+    camera.target = Eigen::Vector3d(options.target[0], options.target[1], options.target[2]);
+    camera.fov_deg = options.fov_deg;
+    camera.width = options.width;
+    camera.height = options.height;
+    render::validateCamera(camera);
+    settings.camera = camera;
+  }
   if (!options.frames_dir.empty()) settings.out_dir = options.frames_dir;
   if (!options.video.empty()) settings.video = options.video;
   settings.overlays = [this](const sim::Simulation&, double plan_time) {

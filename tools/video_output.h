@@ -3,6 +3,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include <CLI/CLI.hpp>
 
@@ -20,6 +21,9 @@ struct VideoOptions {
   double fps = 30.0;
   int width = 640;
   int height = 480;
+  std::vector<double> eye;     ///< --eye X Y Z: a custom camera (with --target, --fov) instead of a preset
+  std::vector<double> target;  ///< --target X Y Z
+  double fov_deg = 45.0;       ///< --fov [deg]
   bool wanted() const { return !frames_dir.empty() || !video.empty(); }
 };
 
