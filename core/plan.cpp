@@ -8,6 +8,7 @@
 
 #include "core/plan.h"
 
+#include "core/number_text.h"
 #include "core/text_file.h"
 
 #include <algorithm>
@@ -37,25 +38,10 @@ constexpr double kTimeSlack = 1e-9;       // action ends vs. the end of the moti
 // ---- formatting -------------------------------------------------------------------------
 
 // shortest text that reads back to exactly x: for values the user wrote
-std::string exact(double x) {
-  if (std::isnan(x)) return "nan";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof(buffer), x);
-  if (ec != std::errc()) return "?";
-  return std::string(buffer, end);
-}
+std::string exact(double x) { return shortestText(x); }
 
 // six significant digits: for derived values (speeds) and model limits
-std::string brief(double x) {
-  if (std::isnan(x)) return "nan";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buffer[32];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), x, std::chars_format::general, 6);
-  if (ec != std::errc()) return "?";
-  return std::string(buffer, end);
-}
+std::string brief(double x) { return significantText(x, 6); }
 
 std::string inQuotes(std::string_view text) { return "'" + std::string(text) + "'"; }
 

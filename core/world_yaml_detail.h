@@ -10,6 +10,7 @@
 #include <system_error>
 
 #include "core/colors.h"
+#include "core/number_text.h"
 #include "core/world.h"
 
 namespace dashbed::core::world_yaml {
@@ -20,10 +21,7 @@ inline std::string formatNumber(double x) {
   if (std::isnan(x)) return ".nan";
   if (std::isinf(x)) return x > 0 ? ".inf" : "-.inf";
   if (x == 0.0) return "0";  // also -0
-  char buffer[32];
-  const auto [end, ec] = std::to_chars(buffer, buffer + sizeof(buffer), x);
-  if (ec != std::errc()) return "0";  // cannot happen: 32 chars hold any double
-  return std::string(buffer, end);
+  return shortestText(x);
 }
 
 

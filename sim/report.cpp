@@ -4,6 +4,7 @@
 
 #include "sim/report.h"
 
+#include "core/number_text.h"
 #include "core/text_file.h"
 
 #include <algorithm>
@@ -25,25 +26,10 @@ using OrderedJson = nlohmann::ordered_json;
 
 // ---- numbers as text (std::to_chars: no locale) ------------------------------------------
 
-std::string sixDigits(double x) {
-  if (std::isnan(x)) return "nan";
-  if (std::isinf(x)) return x > 0 ? "inf" : "-inf";
-  char buffer[32];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), x, std::chars_format::general, 6);
-  if (ec != std::errc()) return "?";
-  return std::string(buffer, end);
-}
+std::string sixDigits(double x) { return core::significantText(x, 6); }
 
 // seconds with three decimals: JUnit's time attributes are plain decimals (no exponent)
-std::string seconds(double x) {
-  if (!std::isfinite(x)) return "0.000";
-  char buffer[64];
-  const auto [end, ec] =
-      std::to_chars(buffer, buffer + sizeof(buffer), x, std::chars_format::fixed, 3);
-  if (ec != std::errc()) return "0.000";
-  return std::string(buffer, end);
-}
+std::string seconds(double x) { return std::isfinite(x) ? core::fixedText(x, 3) : "0.000"; }
 
 // the relation that holds when the check `comparison` failed
 std::string_view violated(std::string_view comparison) {
