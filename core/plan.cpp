@@ -8,6 +8,7 @@
 
 #include "core/plan.h"
 
+#include "core/json_pointer.h"
 #include "core/number_text.h"
 #include "core/text_file.h"
 
@@ -60,26 +61,8 @@ std::string nameList(const Range& items, GetName get_name, std::size_t max_names
 
 // ---- JSON pointers (RFC 6901) -----------------------------------------------------------
 
-std::string escapeToken(std::string_view key) {
-  std::string token;
-  for (const char c : key) {
-    if (c == '~') {
-      token += "~0";
-    } else if (c == '/') {
-      token += "~1";
-    } else {
-      token += c;
-    }
-  }
-  return token;
-}
-
-std::string at(const std::string& pointer, std::string_view key) {
-  return pointer + "/" + escapeToken(key);
-}
-std::string at(const std::string& pointer, std::size_t index) {
-  return pointer + "/" + std::to_string(index);
-}
+std::string at(const std::string& pointer, std::string_view key) { return jsonPointerAt(pointer, key); }
+std::string at(const std::string& pointer, std::size_t index) { return jsonPointerAt(pointer, index); }
 
 [[noreturn]] void fail(const std::string& file, const std::string& pointer,
                        const std::string& what) {

@@ -4,6 +4,7 @@
 
 #include "sim/report.h"
 
+#include "core/json_pointer.h"
 #include "core/number_text.h"
 #include "core/text_file.h"
 
@@ -86,22 +87,8 @@ OrderedJson toJson(const ActionReport& action) {
 
 // ---- JSON reading ---------------------------------------------------------------------------
 
-std::string pointerAt(const std::string& pointer, std::string_view key) {
-  std::string token;
-  for (const char c : key) {
-    if (c == '~') {
-      token += "~0";
-    } else if (c == '/') {
-      token += "~1";
-    } else {
-      token += c;
-    }
-  }
-  return pointer + "/" + token;
-}
-std::string pointerAt(const std::string& pointer, std::size_t index) {
-  return pointer + "/" + std::to_string(index);
-}
+std::string pointerAt(const std::string& pointer, std::string_view key) { return core::jsonPointerAt(pointer, key); }
+std::string pointerAt(const std::string& pointer, std::size_t index) { return core::jsonPointerAt(pointer, index); }
 
 // type-checked access, failing with "file: pointer: what"
 class Reader {
