@@ -18,7 +18,7 @@
 #include "core/world_loader.h"
 #include "sim/run_plan.h"
 #include "tools/cli_support.h"
-#include "tools/sequential_plan.h"
+#include "tools/run_planner.h"
 #include "tools/sim_output.h"
 #include "tools/video_output.h"
 
@@ -119,7 +119,7 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
 
 void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options) {
   std::cout << "\nplanning (baseline sequencer: one object at a time, shortest robot chain)...\n";
-  const core::Plan plan = sequentialPlan(loaded);
+  const core::Plan plan = planForRun(loaded, PlannerChoice{});
   if (!options.plan_out.empty()) {
     std::ofstream out(options.plan_out, std::ios::binary);
     out << core::writePlanJson(plan);
