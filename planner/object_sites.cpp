@@ -1,0 +1,85 @@
+#include "planner/object_sites.h"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <string>
+
+namespace dashbed::planner {
+
+std::optional<RestingObject> ObjectSites::site(int index) const {
+  if (index < 0 || index >= numSites()) throw std::invalid_argument("site " + std::to_string(index) + " out of range");
+  const int object = index / 2;
+  if (index % 2 == 0) return RestingObject{object, start[object]};
+  if (!goal[object]) return std::nullopt;
+  return RestingObject{object, *goal[object]};
+}
+
+std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size) {
+  const double pitch_x = size.x() + 2 * kFingerRoom, pitch_y = size.y() + 2 * kFingerRoom;
+  const int nx = std::max(1, static_cast<int>(std::floor((region.size.x() - size.x()) / pitch_x)) + 1);
+  const int ny = std::max(1, static_cast<int>(std::floor((region.size.y() - size.y()) / pitch_y)) + 1);
+  std::vector<Eigen::Vector3d> slots;
+  for (int iy = 0; iy < ny; ++iy) {
+    for (int ix = 0; ix < nx; ++ix) {
+      const Eigen::Vector3d p_R((ix - (nx - 1) / 2.0) * pitch_x, (iy - (ny - 1) / 2.0) * pitch_y, size.z() / 2);
+      slots.push_back(region.X_WR * p_R);
+    }
+  }
+  return slots;
+}
+
+namespace {
+
+/// The rotation of R_WO's axis nearest the world vertical onto the vertical, keeping which
+/// face is down, then turned about the vertical to `yaw`: the resting orientation at a goal.
+Eigen::Matrix3d restingOrientation(const Eigen::Matrix3d& R_WO, double yaw) {
+  int k = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (std::abs(R_WO(2, i)) > std::abs(R_WO(2, k))) k = i;
+  }
+  const int a = (k + 1) % 3, b = (k + 2) % 3;
+  const bool up = R_WO(2, k) > 0.0;
+  // R_WO' columns: object axis a -> world x, b -> y, k -> z (or b, a, -k when upside down)
+  Eigen::Matrix3d R_UO = Eigen::Matrix3d::Zero();
+  R_UO(0, up ? a : b) = 1.0;
+  R_UO(1, up ? b : a) = 1.0;
+  R_UO(2, k) = up ? 1.0 : -1.0;
+  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R_UO;
+}
+
+}  // namespace
+
+ObjectSites objectSites(const core::World& world) {
+  ObjectSites sites;
+  std::map<std::string, std::size_t> used;
+  for (const core::ObjectSpec& object : world.objects) {
+    sites.start.push_back(object.X_WO);
+    const core::Region* region = world.goalRegionOf(object);
+    if (region == nullptr) {
+      sites.goal.emplace_back();
+      sites.goal_region.push_back(-1);
+      continue;
+    }
+    sites.goal_region.push_back(static_cast<int>(region - world.regions.data()));
+    const Eigen::Matrix3d R_WO =
+        restingOrientation(object.X_WO.linear(), std::atan2(region->X_WR.linear()(1, 0), region->X_WR.linear()(0, 0)));
+    // the object's extent along the region's axes
+    const Eigen::Vector3d footprint =
+        (region->X_WR.linear().transpose() * R_WO * object.size.asDiagonal()).cwiseAbs().rowwise().sum();
+    const std::vector<Eigen::Vector3d> slots = regionSlots(*region, footprint);
+    std::size_t& k = used[region->name];
+    if (k >= slots.size()) {
+      throw std::runtime_error("region " + region->name + " has room for " + std::to_string(slots.size()) +
+                               " objects side by side; more are sent there");
+    }
+    core::Pose X_WO = core::Pose::Identity();
+    X_WO.linear() = R_WO;
+    X_WO.translation() = slots[k++];
+    sites.goal.push_back(X_WO);
+  }
+  return sites;
+}
+
+}  // namespace dashbed::planner

@@ -1,0 +1,47 @@
+#pragma once
+// Where objects rest during a rearrangement: each object's start pose and its assigned goal
+// placement. These are the "sites" the planner checks motions against: a motion that would
+// touch an object at one of its sites is allowed only while the object is elsewhere, which the
+// hyperpath search turns into scheduling constraints (e.g. on a shelf, place the back object
+// before the front one blocks the way).
+//
+// Goal placements: the objects sent to a region are given slots in it, in object order, side
+// by side in rows (pitch = object size + room for the fingertips on both sides), centred on
+// the region floor. The object rests on the face it rests on at its start, turned about the
+// vertical into line with the region.
+
+#include <optional>
+#include <vector>
+
+#include "core/pose.h"
+#include "core/world.h"
+#include "planner/collision_checker.h"
+
+namespace dashbed::planner {
+
+/// Room a gripper needs beside a placed object on each side: 17.4 mm fingertip thickness plus
+/// clearance (URDF finger geometry) [m].
+inline constexpr double kFingerRoom = 0.025;
+
+struct ObjectSites {
+  std::vector<core::Pose> start;                ///< [object] X_WO at its start
+  std::vector<std::optional<core::Pose>> goal;  ///< [object] X_WO of its goal placement; none without a goal
+  std::vector<int> goal_region;                 ///< [object] index into World::regions, or -1
+
+  int numObjects() const { return static_cast<int>(start.size()); }
+  /// Sites are numbered 2 o (object o at its start) and 2 o + 1 (at its goal).
+  int numSites() const { return 2 * numObjects(); }
+  static int startSite(int object) { return 2 * object; }
+  static int goalSite(int object) { return 2 * object + 1; }
+  /// The object resting at a site; std::nullopt for the goal site of an object without a goal.
+  std::optional<RestingObject> site(int index) const;
+};
+
+/// Object-centre positions for objects of `size` side by side in a region, row by row.
+std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size);
+
+/// The sites of every object of a world. Throws std::runtime_error naming the region when more
+/// objects are sent to it than fit side by side.
+ObjectSites objectSites(const core::World& world);
+
+}  // namespace dashbed::planner

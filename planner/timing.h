@@ -1,0 +1,59 @@
+#pragma once
+// Time parameterisation of joint-space paths within the UR5e's velocity limits and
+// configurable acceleration limits.
+//
+// Planner time is kept in whole milliseconds (Millis): sums are exact, schedules are
+// reproducible to the byte, and the plan file's numbers stay short.
+//
+// A path is a polyline in joint space. timePolyline() drives it rest to rest along each
+// straight piece with a synchronised trapezoidal profile: every joint starts and stops
+// together, so the arm stays exactly on the straight line between waypoints (the line the
+// collision checker checked), and each piece's duration is rounded up to a whole millisecond.
+// The samples it writes carry the profile's velocities, so the simulator's cubic Hermite
+// interpolation between them stays on the same line.
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "core/ur_ik.h"
+
+namespace dashbed::planner {
+
+using Millis = std::int64_t;
+
+inline double toSeconds(Millis t) { return static_cast<double>(t) / 1000.0; }
+/// Smallest whole number of milliseconds >= seconds (within 1 ns).
+Millis ceilMillis(double seconds);
+
+/// Joint limits for time parameterisation.
+struct TimingLimits {
+  std::array<double, 6> max_velocity{};      ///< [rad/s], > 0
+  std::array<double, 6> max_acceleration{};  ///< [rad/s^2], > 0
+};
+
+/// One timed sample of a trajectory: time from the start of the path, position, velocity.
+struct TimedSample {
+  Millis t = 0;
+  core::ArmConfig q{};
+  core::ArmConfig qd{};
+};
+
+/// Duration of the rest-to-rest synchronised trapezoidal move a -> b, rounded up to whole
+/// milliseconds (0 when a == b).
+Millis restToRestDuration(const core::ArmConfig& a, const core::ArmConfig& b, const TimingLimits& limits);
+
+/// Position and velocity at time t in [0, duration] of the rest-to-rest move a -> b stretched
+/// to `duration` (>= restToRestDuration). Outside the interval: the end positions, zero velocity.
+TimedSample restToRestSample(const core::ArmConfig& a, const core::ArmConfig& b, Millis duration, Millis t,
+                             const TimingLimits& limits);
+
+/// Total rest-to-rest duration of a polyline (sum over its pieces).
+Millis polylineDuration(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits);
+
+/// Samples of a polyline driven rest to rest along each piece: every waypoint (at rest) and
+/// points every `sample_step` in between, starting at t = 0 with waypoints.front().
+std::vector<TimedSample> timePolyline(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits,
+                                      Millis sample_step = 50);
+
+}  // namespace dashbed::planner

@@ -1,0 +1,137 @@
+#pragma once
+// The transition planners of the motion hypergraph (paper: Method > Motion Hypergraph; Alg. 2's
+// SampleTransitions): IK-based samples of the pick, place and handoff transition hyperarcs of
+// the task-space hypergraph, each carrying the timed motion of every robot involved.
+//
+//  pick    the robot starts at a pre-grasp configuration (cartesian_distance back along the
+//          grasp's approach axis), approaches in a straight TCP line, closes, dwells, lifts
+//          straight up. Grasps: core::boxGrasps of the object as it rests (from above and,
+//          where the gripper body clears the surface, from the side).
+//  place   the robot starts holding the object cartesian_distance back along its approach axis
+//          from the goal placement (above it for a vertical approach, in front of it for a
+//          horizontal one: shelves), moves in, opens, dwells, retreats the same way. The object
+//          may rest on any face whose footprint fits the region, turned by multiples of 90
+//          degrees from the region's yaw, at the goal site's position (ObjectSites).
+//  handoff the giver holds the object still at a handoff pose in the overlap of both
+//          workspaces; the receiver starts at a pre-grasp configuration, approaches, closes;
+//          both hold for a dwell (the overlap), the giver opens, dwells and retreats along its
+//          approach axis, then the receiver retreats. The receiver's grasp closes on a
+//          different face pair than the giver's, so the grippers do not collide.
+//
+// Every sample is checked with the collision checker: each configuration and each straight
+// piece between keys is free against the static scene and the robot itself (held object
+// included; the object being grasped or released counts as held but not against the static
+// scene while it touches its support); for handoffs, both robots against each other at every
+// key of the overlapping motion. Collisions with other objects resting at their start or goal
+// sites do not reject a sample: they are recorded in `touches`, and the search schedules the
+// transition while those sites are empty.
+
+#include <cstdint>
+#include <optional>
+#include <random>
+#include <utility>
+#include <vector>
+
+#include "core/plan.h"
+#include "core/world_loader.h"
+#include "planner/collision_checker.h"
+#include "planner/object_sites.h"
+#include "planner/roadmap.h"
+#include "planner/task_space_hypergraph.h"
+#include "planner/timing.h"
+
+namespace dashbed::planner {
+
+/// How a robot holds an object: the TCP in the object's frame, and the finger position when
+/// closed on it (half the object's width along the closing axis, TCP x) [m].
+struct Grasp {
+  core::Pose X_OT = core::Pose::Identity();
+  double finger = 0.0;
+};
+
+/// True when two grasps are the same to 1e-9 (rotation and translation).
+bool sameGrasp(const Grasp& a, const Grasp& b);
+
+/// One robot's part of a transition: straight joint-space pieces between timed keys.
+struct TransitionMotion {
+  struct Key {
+    Millis t = 0;           ///< from the transition's start
+    core::ArmConfig q{};
+  };
+  int robot = -1;
+  std::vector<Key> keys;  ///< keys.front().t == 0; strictly increasing t
+  /// Per piece i (keys[i] -> keys[i+1]): finger position [m] and held object during the piece.
+  std::vector<double> finger;
+  std::vector<std::optional<HeldObject>> held;
+  /// Gripper commands, times from the transition's start.
+  std::vector<std::pair<Millis, core::GripperAction>> grips;
+
+  const core::ArmConfig& start() const { return keys.front().q; }
+  const core::ArmConfig& end() const { return keys.back().q; }
+};
+
+/// A sampled transition hyperarc of the motion hypergraph.
+struct TransitionSample {
+  int hyperarc = -1;  ///< the task-space hyperarc it samples
+  TransitionKind kind = TransitionKind::kPick;
+  int object = -1;
+  /// pick / place: one motion (the robot); handoff: the giver's, then the receiver's.
+  std::vector<TransitionMotion> motions;
+  Millis duration = 0;  ///< every motion ends by then; a robot holds its last key until then
+  /// The grasp the transition needs the (giving / placing) robot to hold the object in;
+  /// std::nullopt for a pick.
+  std::optional<Grasp> grasp_before;
+  /// The grasp the (picking / receiving) robot holds the object in afterwards; std::nullopt
+  /// for a place.
+  std::optional<Grasp> grasp_after;
+  core::Pose X_WO = core::Pose::Identity();  ///< object pose: at rest (pick, place) or in the air (handoff)
+  SiteSet touches;  ///< sites of *other* objects that some piece of some motion would touch
+  /// The window of the plan action (core::PlanAction start/end), from the transition's start.
+  Millis action_start = 0;
+  Millis action_end = 0;
+};
+
+struct TransitionSettings {
+  double cartesian_distance = 0.10;  ///< approach, lift and retreat length [m]
+  double cartesian_speed = 0.10;     ///< average TCP speed along them [m/s]
+  double cartesian_step = 0.01;      ///< spacing of their IK keys [m]
+  double speed_fraction = 0.5;       ///< cap on joint speed along them, fraction of the limit
+  double gripper_dwell = 0.6;        ///< wait after each gripper command [s]
+  double drop_height = 0.002;        ///< release height above the support [m]
+  double max_step_jump = 0.3;        ///< largest joint change between keys of a line [rad]
+  double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
+  double handoff_min_height = 0.15;  ///< handoff object centre above the higher base [m], lowest
+  double handoff_max_height = 0.45;  ///< ... highest
+};
+
+class TransitionSampler {
+ public:
+  /// All references must outlive the sampler.
+  TransitionSampler(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
+                    const CollisionScene& scene, const ObjectSites& sites, const TransitionSettings& settings = {});
+
+  /// Pick samples of pick hyperarc `hyperarc` (object at its start site): one per grasp that
+  /// passes the checks, IK solution nearest the robot's home configuration. Deterministic.
+  std::vector<TransitionSample> pick(int hyperarc);
+
+  /// Place samples of place hyperarc `hyperarc` (object into its goal site) for a robot holding
+  /// the object in `held`: one per fitting resting orientation that passes. Deterministic.
+  std::vector<TransitionSample> place(int hyperarc, const Grasp& held);
+
+  /// Up to `count` handoff samples of handoff hyperarc `hyperarc` for a giver holding the
+  /// object in `giver_grasp`: handoff poses drawn from `rng` (object centre near the middle of
+  /// the two bases, between handoff_min_height and handoff_max_height, orientation such that
+  /// the giver's IK exists), receiver grasps enumerated. Makes at most 20 count draws.
+  std::vector<TransitionSample> handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng, int count);
+
+  const TransitionSettings& settings() const { return settings_; }
+
+ private:
+  const core::LoadedWorld* world_;
+  const TaskSpaceHypergraph* task_space_;
+  const CollisionScene* scene_;
+  const ObjectSites* sites_;
+  TransitionSettings settings_;
+};
+
+}  // namespace dashbed::planner
