@@ -157,6 +157,7 @@ struct StaticData {
 
 struct SceneData {
   CollisionSettings settings;
+  const core::RobotSet* robot_set = nullptr;
   std::vector<RobotData> robots;
   std::vector<ObjectData> objects;
   StaticData statics;
@@ -1025,6 +1026,7 @@ CollisionScene::CollisionScene(const core::World& world, const core::RobotSet& r
   }
   detail::SceneData& data = *data_;
   data.settings = settings;
+  data.robot_set = &robots;
 
   // static geometry: the fixtures' boxes and the floor, in FCL's dynamic AABB tree
   detail::StaticData& statics = data.statics;
@@ -1069,6 +1071,8 @@ CollisionScene::CollisionScene(const core::World& world, const core::RobotSet& r
 }
 
 CollisionScene::~CollisionScene() = default;
+
+const core::RobotSet& CollisionScene::robots() const { return *data_->robot_set; }
 
 const CollisionSettings& CollisionScene::settings() const { return data_->settings; }
 int CollisionScene::numRobots() const { return static_cast<int>(data_->robots.size()); }

@@ -132,6 +132,8 @@ class CollisionScene {
   CollisionScene& operator=(const CollisionScene&) = delete;
 
   const CollisionSettings& settings() const;
+  /// The robots the scene was built for (models, limits, IK).
+  const core::RobotSet& robots() const;
   int numRobots() const;
   int numObjects() const;
   /// Number of configuration entries of a robot (arm joints then fingers).

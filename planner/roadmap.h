@@ -16,9 +16,10 @@
 // Metric: the time a rest-to-rest move needs at full joint speed, max_j |dq_j| / v_j [s].
 // Everything is deterministic: the same seed and calls give the same roadmap and paths.
 
+#include <array>
 #include <cstdint>
+#include <memory>
 #include <optional>
-#include <random>
 #include <vector>
 
 #include "core/ur_ik.h"
@@ -67,15 +68,15 @@ class Roadmap {
   /// Shortest path (waypoints, both ends included) from node `from` to node `to` using only
   /// edges that are free against the static scene and touch none of the `occupied` sites,
   /// shortcut (seeded, deterministic); std::nullopt when the roadmap does not connect them.
-  /// The direct straight motion is tried first.
+  /// The direct straight motion is tried first. One waypoint when from == to.
   std::optional<std::vector<core::ArmConfig>> query(int from, int to, const SiteSet& occupied);
 
   /// True when the straight motion a -> b is free against the static scene and touches none of
   /// the `occupied` sites.
   bool motionFree(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& occupied);
 
-  int robot() const { return robot_; }
-  const std::optional<HeldObject>& held() const { return held_; }
+  int robot() const;
+  const std::optional<HeldObject>& held() const;
   int numNodes() const;
   int numEdges() const;
   int numValidatedEdges() const;
@@ -86,15 +87,7 @@ class Roadmap {
   Eigen::VectorXd fullConfiguration(const core::ArmConfig& q) const;
 
  private:
-  struct Impl;
-  // implementation members (see roadmap.cpp)
-  const CollisionScene* scene_;
-  const ObjectSites* sites_;
-  int robot_;
-  std::optional<HeldObject> held_;
-  double finger_;
-  RoadmapSettings settings_;
-  std::mt19937_64 rng_;
+  struct Impl;  // scene, sampler, checker, nodes, edges and caches (roadmap.cpp)
   std::unique_ptr<Impl> impl_;
 
  public:

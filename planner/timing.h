@@ -14,6 +14,7 @@
 
 #include <array>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include "core/ur_ik.h"
@@ -47,6 +48,11 @@ Millis restToRestDuration(const core::ArmConfig& a, const core::ArmConfig& b, co
 /// to `duration` (>= restToRestDuration). Outside the interval: the end positions, zero velocity.
 TimedSample restToRestSample(const core::ArmConfig& a, const core::ArmConfig& b, Millis duration, Millis t,
                              const TimingLimits& limits);
+
+/// The same at a time given in seconds (exact, for collision checks between samples):
+/// position and velocity.
+std::pair<core::ArmConfig, core::ArmConfig> restToRestAt(const core::ArmConfig& a, const core::ArmConfig& b,
+                                                         Millis duration, double t, const TimingLimits& limits);
 
 /// Total rest-to-rest duration of a polyline (sum over its pieces).
 Millis polylineDuration(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits);

@@ -6,12 +6,15 @@
 //  pick    the robot starts at a pre-grasp configuration (cartesian_distance back along the
 //          grasp's approach axis), approaches in a straight TCP line, closes, dwells, lifts
 //          straight up. Grasps: core::boxGrasps of the object as it rests (from above and,
-//          where the gripper body clears the surface, from the side).
+//          where the gripper body clears the surface, from the side); on an object at least
+//          two fingertips long across the closing axis also shifted to either end, so that two
+//          grippers fit side by side in a later handoff.
 //  place   the robot starts holding the object cartesian_distance back along its approach axis
 //          from the goal placement (above it for a vertical approach, in front of it for a
 //          horizontal one: shelves), moves in, opens, dwells, retreats the same way. The object
 //          may rest on any face whose footprint fits the region, turned by multiples of 90
-//          degrees from the region's yaw, at the goal site's position (ObjectSites).
+//          degrees from the region's yaw, at the goal site's position (ObjectSites), as long
+//          as it fills exactly the site's box (the volume the search schedules).
 //  handoff the giver holds the object still at a handoff pose in the overlap of both
 //          workspaces; the receiver starts at a pre-grasp configuration, approaches, closes;
 //          both hold for a dwell (the overlap), the giver opens, dwells and retreats along its
@@ -27,6 +30,7 @@
 // transition while those sites are empty.
 
 #include <cstdint>
+#include <memory>
 #include <optional>
 #include <random>
 #include <utility>
@@ -97,11 +101,17 @@ struct TransitionSettings {
   double cartesian_step = 0.01;      ///< spacing of their IK keys [m]
   double speed_fraction = 0.5;       ///< cap on joint speed along them, fraction of the limit
   double gripper_dwell = 0.6;        ///< wait after each gripper command [s]
-  double drop_height = 0.002;        ///< release height above the support [m]
+  double drop_height = 0.002;        ///< release height above the support after a vertical descent [m]
+  /// Release height above the support for a horizontal approach [m]: the held object slides
+  /// in at this height. Above the collision margin (CollisionSettings::margin) it is checked
+  /// against the static scene on the way; at or below it, it counts as touching its support.
+  double slide_height = 0.005;
+  double peak_factor = 1.5;          ///< peak / average joint speed of the simulator's cubic Hermite
   double max_step_jump = 0.3;        ///< largest joint change between keys of a line [rad]
   double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
   double handoff_min_height = 0.15;  ///< handoff object centre above the higher base [m], lowest
   double handoff_max_height = 0.45;  ///< ... highest
+  double handoff_spread = 0.10;      ///< handoff object centre within this of the midpoint, along and across [m]
 };
 
 class TransitionSampler {
@@ -132,6 +142,7 @@ class TransitionSampler {
   const CollisionScene* scene_;
   const ObjectSites* sites_;
   TransitionSettings settings_;
+  std::unique_ptr<CollisionChecker> checker_;  // the one checker of every sample's checks
 };
 
 }  // namespace dashbed::planner

@@ -1,4 +1,5 @@
-// dashbed bench sim: real-time factor of headless simulation.
+// dashbed bench sim: real-time factor of headless simulation; bench render: offscreen frames per
+// second; bench plan: the paper's planner experiments (tools/bench_plan.h).
 
 #include <chrono>
 #include <ctime>
@@ -12,6 +13,7 @@
 #include "sim/render/render_benchmark.h"
 #include "sim/plan_executor.h"
 #include "sim/simulation.h"
+#include "tools/bench_plan.h"
 #include "tools/cli_support.h"
 #include "tools/scenarios.h"
 
@@ -120,6 +122,47 @@ void addBenchCommand(CLI::App& app) {
   render->add_option("--world", *world_file, "world file (default: worlds/default.yaml)");
   render->add_option("--frames", *frames, "frames per measurement")->capture_default_str();
   render->callback([=] { runGuarded("bench render", [&] { runBenchRender(*world_file, *frames); }); });
+
+  auto plan_options = std::make_shared<BenchOptions>();
+  CLI::App* plan = bench->add_subcommand(
+      "plan", "The DaSH paper's planner experiments (Table I): sorting with 2 and 4 robots, shelving; Greedy and "
+              "MM-DaSH; writes bench_plan.md/.csv/_runs.csv/.png into --out and prints the table");
+  plan->add_option("--suite", plan_options->suites, "sorting2, sorting4, shelf or all (several: comma-separated)")
+      ->delimiter(',')
+      ->capture_default_str();
+  plan->add_option("--cubes,--objects", plan_options->objects, "object counts (default: the paper's for each suite)")
+      ->delimiter(',');
+  plan->add_option("--starts", plan_options->starts, "sorting start layouts: cross, random")
+      ->delimiter(',')
+      ->capture_default_str();
+  plan->add_option("--seeds", plan_options->seeds, "seeds 1..N per row (world and planner)")->capture_default_str();
+  plan->add_option("--methods", plan_options->methods, "greedy (Greedy-MM-DaSH), optimal (MM-DaSH)")
+      ->delimiter(',')
+      ->capture_default_str();
+  plan->add_option("--greedy-budget", plan_options->greedy_budget, "wall-clock budget per Greedy run [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  plan->add_option("--optimal-budget", plan_options->optimal_budget, "wall-clock budget per MM-DaSH run [s]")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  plan->add_option("--max-rounds", plan_options->max_rounds, "representation expansion rounds per run")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  plan->add_flag("--simulate,!--no-simulate", plan_options->simulate,
+                 "execute every solved plan in the simulator and count those passing every check (default on)");
+  plan->add_option("--jobs", plan_options->jobs, "runs at a time (threads)")
+      ->check(CLI::PositiveNumber)
+      ->capture_default_str();
+  plan->add_option("--out", plan_options->out, "output directory")->capture_default_str();
+  plan->callback([plan_options] {
+    runGuarded("bench plan", [&] {
+      const std::vector<BenchRow> rows = runBench(*plan_options, std::cout);
+      writeBenchOutputs(rows, *plan_options);
+      std::cout << "\n"
+                << markdownTable(rows) << "\nwrote " << plan_options->out
+                << "/bench_plan.{md,csv,png} and bench_plan_runs.csv\n";
+    });
+  });
 }
 
 }  // namespace dashbed::tools

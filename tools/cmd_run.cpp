@@ -1,8 +1,8 @@
 // dashbed run [WORLD]: the main job on a world (the built-in default when none is given).
 //
 // Loads and validates the world, reports what each robot can reach and which robots can hand
-// objects to each other, plans (with the baseline sequencer until the DaSH planner lands),
-// executes the plan in simulation and checks it.
+// objects to each other, plans with DaSH (tools/run_planner.h), executes the plan in simulation
+// and checks it.
 
 #include <cmath>
 #include <fstream>
@@ -30,6 +30,7 @@ struct RunOptions {
   bool json = false;
   bool validate_only = false;
   std::string plan_out;
+  PlannerChoice choice;
   ReportOutputs outputs;
   VideoOptions video;
 };
@@ -118,15 +119,17 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
 }
 
 void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options) {
-  std::cout << "\nplanning (baseline sequencer: one object at a time, shortest robot chain)...\n";
-  const core::Plan plan = planForRun(loaded, PlannerChoice{});
+  std::cout << "\nplanning (DaSH, " << options.choice.method << ", seed " << options.choice.seed << ")...\n";
+  planner::PlanResult planned = planWorld(loaded, options.choice);
+  std::cout << describePlanResult(planned);
+  if (!planned.plan) throw CLI::RuntimeError(exitCodeOf(planned.status));
+  const core::Plan& plan = *planned.plan;
   if (!options.plan_out.empty()) {
     std::ofstream out(options.plan_out, std::ios::binary);
     out << core::writePlanJson(plan);
     if (!out) throw std::runtime_error("cannot write " + options.plan_out);
   }
-  std::cout << "plan: " << plan.actions.size() << " actions, " << std::fixed << std::setprecision(2)
-            << plan.duration() << " s\n\nsimulating and checking...\n";
+  std::cout << "\nsimulating and checking...\n";
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, "plan");
   const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan,
                                               options.plan_out.empty() ? "plan" : options.plan_out, options.video,
@@ -150,11 +153,12 @@ void addRunCommand(CLI::App& app) {
   CLI::App* run = app.add_subcommand(
       "run", "The main job: validate a world, plan, execute the plan in simulation and check every grasp, "
              "handoff and placement (default world: worlds/default.yaml). Exit 0 when all checks pass, 1 when "
-             "any fails, 3 for bad input.");
+             "any fails, 3 for bad input, 4 when planning proves the world infeasible, 5 on a planning timeout.");
   run->add_option("world", options->world_file, "world file (YAML)");
   run->add_flag("--validate-only", options->validate_only, "stop after validating the world");
   run->add_flag("--json", options->json, "print the world summary as JSON and stop");
   run->add_option("--plan-out", options->plan_out, "write the plan here (JSON)");
+  addPlannerOptions(*run, options->choice);
   addReportOptions(*run, options->outputs);
   addVideoOptions(*run, options->video, /*with_out_dir=*/false);
   run->callback([options] { runGuarded("run", [&] { runJob(*options); }); });

@@ -25,5 +25,7 @@ void addSimCommand(CLI::App& app);
 void addRenderCommand(CLI::App& app);
 void addBenchCommand(CLI::App& app);
 void addGraphCommand(CLI::App& app);
+void addStressCommand(CLI::App& app);
+void addPlanCommand(CLI::App& app);
 
 }  // namespace dashbed::tools

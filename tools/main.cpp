@@ -14,6 +14,7 @@ int main(int argc, char** argv) {
   app.set_version_flag("--version", std::string("dashbed ") + DASHBED_VERSION);
   app.require_subcommand(1);
   addRunCommand(app);
+  addPlanCommand(app);
   addGenCommand(app);
   addKinCommand(app);
   addScriptCommand(app);
@@ -21,6 +22,7 @@ int main(int argc, char** argv) {
   addRenderCommand(app);
   addBenchCommand(app);
   addGraphCommand(app);
+  addStressCommand(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::RuntimeError& e) {

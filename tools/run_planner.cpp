@@ -1,21 +1,87 @@
 #include "tools/run_planner.h"
 
-#include "tools/sequential_plan.h"
+#include <chrono>
+#include <iomanip>
+#include <sstream>
+
+#include "tools/commands.h"
 
 namespace dashbed::tools {
 
-core::Plan planForRun(const core::LoadedWorld& world, const PlannerChoice& choice) {
-  if (choice.method != "greedy" && choice.method != "optimal") {
+planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoice& choice) {
+  planner::PlannerSettings settings;
+  if (choice.method == "greedy") {
+    settings.method = planner::Method::kGreedy;
+  } else if (choice.method == "optimal") {
+    settings.method = planner::Method::kOptimal;
+  } else {
     throw std::invalid_argument("unknown planning method '" + choice.method + "' (greedy or optimal)");
   }
   if (!(choice.time_budget > 0.0)) throw std::invalid_argument("the time budget must be positive");
-  try {
-    core::Plan plan = sequentialPlan(world);
-    plan.seed = choice.seed;
-    return plan;
-  } catch (const std::runtime_error& e) {
-    throw PlanningFailed(PlanningStatus::kInfeasible, e.what());
+  if (choice.max_rounds < 1) throw std::invalid_argument("the number of rounds must be at least 1");
+  settings.seed = choice.seed;
+  settings.max_rounds = choice.max_rounds;
+  planner::PlannerBudget budget;
+  budget.deadline = std::chrono::steady_clock::now() +
+                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(choice.time_budget));
+  return planner::solve(world, settings, budget);
+}
+
+std::string describePlanResult(const planner::PlanResult& result) {
+  const planner::PlannerStats& s = result.stats;
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(3);
+  out << "status: " << planner::toString(result.status);
+  if (!result.reason.empty()) out << " (" << result.reason << ")";
+  out << "\n";
+  out << "time: construction " << s.construction_seconds << " s, search " << s.search_seconds << " s, conflict resolution "
+      << s.conflict_seconds << " s, " << s.rounds << (s.rounds == 1 ? " round\n" : " rounds\n");
+  out << "task-space hypergraph: " << s.task_vertices << " vertices, " << s.task_hyperarcs << " hyperarcs\n";
+  out << "motion hypergraph: " << s.motion_vertices << " vertices, " << s.motion_transitions << " transitions, "
+      << s.motion_moves << " moves, " << s.roadmaps << " roadmaps (" << s.roadmap_nodes << " nodes)\n";
+  out << "search: " << s.expansions << " expansions, " << s.task_plans << " task plans, " << s.conflict_nodes
+      << " conflict-resolution nodes, " << s.scheduling_constraints << " scheduling constraints\n";
+  if (result.plan) {
+    out << std::setprecision(2) << "plan: " << result.plan->actions.size() << " actions, makespan " << s.makespan
+        << " s (optimistic " << s.optimistic_makespan << " s)\n";
   }
+  return out.str();
+}
+
+nlohmann::json planResultJson(const planner::PlanResult& result) {
+  nlohmann::json out = result.plan ? result.plan->statistics : nlohmann::json::object();
+  out["status"] = planner::toString(result.status);
+  if (!result.reason.empty()) out["reason"] = result.reason;
+  const planner::PlannerStats& s = result.stats;
+  out["seconds"] = {{"construction", s.construction_seconds},
+                    {"search", s.search_seconds},
+                    {"conflict_resolution", s.conflict_seconds}};
+  return out;
+}
+
+int exitCodeOf(planner::PlannerStatus status) {
+  switch (status) {
+    case planner::PlannerStatus::kSolved:
+      return kExitOk;
+    case planner::PlannerStatus::kInfeasible:
+      return kExitInfeasible;
+    case planner::PlannerStatus::kTimeout:
+      break;
+  }
+  return kExitTimeout;
+}
+
+core::Plan planForRun(const core::LoadedWorld& world, const PlannerChoice& choice) {
+  planner::PlanResult result = planWorld(world, choice);
+  switch (result.status) {
+    case planner::PlannerStatus::kSolved:
+      return std::move(*result.plan);
+    case planner::PlannerStatus::kInfeasible:
+      throw PlanningFailed(PlanningStatus::kInfeasible, result.reason);
+    case planner::PlannerStatus::kTimeout:
+      break;
+  }
+  throw PlanningFailed(PlanningStatus::kTimeout, result.reason);
 }
 
 }  // namespace dashbed::tools

@@ -1,13 +1,16 @@
 #pragma once
-// The planner behind `dashbed run`, `dashbed plan` and `dashbed stress --replan`: one entry
+// The planner behind `dashbed plan`, `dashbed run` and `dashbed stress --replan`: one entry
 // point, so that every command plans the same way for the same world, method and seed.
 
 #include <cstdint>
 #include <stdexcept>
 #include <string>
 
+#include <CLI/CLI.hpp>
+
 #include "core/plan.h"
 #include "core/world_loader.h"
+#include "planner/dash_planner.h"
 
 namespace dashbed::tools {
 
@@ -24,12 +27,27 @@ struct PlanningFailed : std::runtime_error {
 struct PlannerChoice {
   std::string method = "greedy";  ///< "greedy" (Greedy-MM-DaSH) or "optimal" (MM-DaSH)
   std::uint64_t seed = 1;         ///< sampling seed: same world, method and seed give the same plan
-  double time_budget = 120.0;     ///< wall-clock budget [s]; PlanningFailed(kTimeout) beyond it
-  int max_rounds = 50;            ///< representation expansion rounds before giving up (kTimeout)
+  double time_budget = 120.0;     ///< wall-clock budget [s]; status timeout beyond it
+  int max_rounds = 30;            ///< representation expansion rounds before giving up (timeout)
 };
 
-/// Plans `world`. Throws PlanningFailed when no plan is found, std::invalid_argument for a bad
-/// choice (unknown method, non-positive budget).
+/// Adds --method, --seed, --time-budget and --max-rounds to a command.
+void addPlannerOptions(CLI::App& command, PlannerChoice& choice);
+
+/// Runs the DaSH planner on `world`. Throws std::invalid_argument for a bad choice (unknown
+/// method, non-positive budget or rounds).
+planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoice& choice);
+
+/// A few lines for people: status (and reason), stage times, representation sizes, makespan.
+std::string describePlanResult(const planner::PlanResult& result);
+
+/// The same as JSON, with the wall-clock times (which plan files leave out).
+nlohmann::json planResultJson(const planner::PlanResult& result);
+
+/// The exit code of a planning status (0 solved, kExitInfeasible, kExitTimeout).
+int exitCodeOf(planner::PlannerStatus status);
+
+/// planWorld, returning the plan; throws PlanningFailed when there is none.
 core::Plan planForRun(const core::LoadedWorld& world, const PlannerChoice& choice);
 
 }  // namespace dashbed::tools

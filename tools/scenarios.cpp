@@ -55,6 +55,9 @@ constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice 
 constexpr double kCellPitch = kMinCubeSpacing + 2.0 * kJitter;
 
 constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0};
+// shelving: kHome would put the gripper into the shelf (TCP 0.49 m ahead of the base); this
+// pose tucks the forearm in (TCP 0.24 m ahead, 0.26 m above the table, pointing down)
+constexpr std::array<double, 6> kShelfHome{0.0, -2.2, 2.2, -1.5708, -1.5708, 0.0};
 constexpr core::Color kWood{0.62, 0.45, 0.28};
 constexpr core::Color kShelfGrey{0.55, 0.56, 0.6};
 
@@ -97,12 +100,13 @@ std::vector<Eigen::Vector2d> zoneCells(const Zone& zone) {
   return cells;
 }
 
-core::RobotSpec makeRobot(std::string name, const Eigen::Vector2d& p_W, double yaw) {
+core::RobotSpec makeRobot(std::string name, const Eigen::Vector2d& p_W, double yaw,
+                          const std::array<double, 6>& home = kHome) {
   core::RobotSpec robot;
   robot.name = std::move(name);
   robot.model = "ur5e_hande";
   robot.X_WBase = core::makePoseXyzYaw(Eigen::Vector3d(p_W.x(), p_W.y(), kTableHeight), yaw);
-  robot.home = kHome;
+  robot.home = home;
   return robot;
 }
 
@@ -313,8 +317,8 @@ core::World generateShelving(const ShelvingParams& params) {
 
   core::World world;
   world.fixtures.push_back(makeTable(2.0, 1.6));
-  world.robots.push_back(makeRobot("r0", Eigen::Vector2d(0.05, -0.35), 0.0));
-  world.robots.push_back(makeRobot("r1", Eigen::Vector2d(0.05, 0.35), 0.0));
+  world.robots.push_back(makeRobot("r0", Eigen::Vector2d(0.05, -0.35), 0.0, kShelfHome));
+  world.robots.push_back(makeRobot("r1", Eigen::Vector2d(0.05, 0.35), 0.0, kShelfHome));
 
   // shelf: opening towards -x (the robots), one board 0.2 above the table and the top board
   core::FixtureSpec shelf;

@@ -1,0 +1,176 @@
+#include "planner/dash_planner.h"
+
+#include <limits>
+#include <stdexcept>
+
+#include "planner/hyperpath_search.h"
+#include "planner/plan_writer.h"
+#include "planner/scheduled_cbs.h"
+
+namespace dashbed::planner {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// Why an object can never reach its goal in the task-space hypergraph, or "".
+std::string unreachableReason(const core::World& world, const TaskSpaceHypergraph& ts, const HyperpathSearch& search,
+                              int object) {
+  const std::string& name = world.objects[object].name;
+  const core::Region* region = world.goalRegionOf(world.objects[object]);
+  if (search.costToGo(object, ts.objectRestingVertex(object)) >= 0) return "";
+  if (ts.allowed().reach.start[object].empty()) return "no robot can reach " + name + " at its start";
+  if (ts.allowed().reach.goal[object].empty()) return "no robot can reach a placement of " + name + " in " + region->name;
+  return "no chain of robots can carry " + name + " from its start to " + region->name +
+         " (the robots reaching it do not share a workspace with those reaching the goal)";
+}
+
+/// The plan's deterministic statistics (wall-clock times are left out on purpose).
+nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStats& stats) {
+  return {{"planner", "DaSH"},
+          {"method", toString(settings.method)},
+          {"seed", settings.seed},
+          {"status", "solved"},
+          {"rounds", stats.rounds},
+          {"task_space_hypergraph", {{"vertices", stats.task_vertices}, {"hyperarcs", stats.task_hyperarcs}}},
+          {"motion_hypergraph",
+           {{"vertices", stats.motion_vertices},
+            {"transitions", stats.motion_transitions},
+            {"moves", stats.motion_moves},
+            {"roadmaps", stats.roadmaps},
+            {"roadmap_nodes", stats.roadmap_nodes}}},
+          {"search_expansions", stats.expansions},
+          {"task_plans", stats.task_plans},
+          {"conflict_nodes", stats.conflict_nodes},
+          {"scheduling_constraints", stats.scheduling_constraints},
+          {"optimistic_makespan", stats.optimistic_makespan},
+          {"makespan", stats.makespan}};
+}
+
+}  // namespace
+
+const char* toString(Method method) { return method == Method::kGreedy ? "greedy" : "optimal"; }
+
+const char* toString(PlannerStatus status) {
+  switch (status) {
+    case PlannerStatus::kSolved:
+      return "solved";
+    case PlannerStatus::kInfeasible:
+      return "infeasible";
+    case PlannerStatus::kTimeout:
+      break;
+  }
+  return "timeout";
+}
+
+PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget) {
+  if (settings.max_rounds < 1) throw std::invalid_argument("planner settings: max_rounds: must be >= 1");
+  PlanResult result;
+  PlannerStats& stats = result.stats;
+  const Clock::time_point started = Clock::now();
+  const auto time_up = [&] { return budget.deadline && Clock::now() >= *budget.deadline; };
+
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  const double task_space_seconds = secondsSince(started);
+  stats.task_vertices = task_space.numVertices();
+  stats.task_hyperarcs = task_space.numHyperarcs();
+  std::unique_ptr<MotionHypergraph> graph;
+  try {
+    graph = std::make_unique<MotionHypergraph>(world, task_space, settings.seed, settings.representation);
+  } catch (const std::runtime_error& e) {  // a region without room for the objects sent there
+    result.reason = e.what();
+    return result;
+  }
+  const auto record = [&] {
+    stats.construction_seconds = task_space_seconds + graph->constructionSeconds();
+    stats.rounds = graph->rounds();
+    stats.motion_vertices = graph->numVertices();
+    stats.motion_transitions = graph->numTransitions();
+    stats.motion_moves = graph->numMoves();
+    stats.roadmaps = graph->numRoadmaps();
+    stats.roadmap_nodes = graph->numRoadmapNodes();
+  };
+
+  // objects that can never reach their goals: infeasible, whatever the sampling
+  {
+    const HyperpathSearch probe(*graph);
+    for (int o = 0; o < task_space.numObjects(); ++o) {
+      const std::string reason = unreachableReason(*world.world, task_space, probe, o);
+      if (!reason.empty()) {
+        result.reason = reason;
+        record();
+        return result;
+      }
+    }
+  }
+
+  const SearchBudget search_budget{settings.search_expansions, time_up};
+  const ConflictResolutionBudget conflict_budget{settings.conflict_nodes, time_up};
+  std::optional<TransitionHistory> best_history;
+  std::optional<Schedule> best_schedule;
+  Millis best = std::numeric_limits<Millis>::max();
+  std::string last_failure = "no task plan found";
+
+  // conflict resolution of a task plan; keeps it when better than the best so far
+  const auto resolve = [&](const TransitionHistory& history) {
+    ++stats.task_plans;
+    const Clock::time_point t0 = Clock::now();
+    const ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
+    stats.conflict_seconds += secondsSince(t0);
+    stats.conflict_nodes += resolved.nodes;
+    if (resolved.status != ConflictStatus::kResolved) {
+      last_failure = "conflict resolution failed: " + resolved.reason;
+      return;
+    }
+    if (resolved.schedule->makespan < best) {
+      best = resolved.schedule->makespan;
+      best_history = history;
+      best_schedule = resolved.schedule;
+      stats.scheduling_constraints = resolved.constraints;
+      stats.optimistic_makespan = toSeconds(history.makespan());
+    }
+  };
+  const auto search_timed = [&](auto&& query) {
+    // the search builds the representation lazily: that time counts as construction
+    const Clock::time_point t0 = Clock::now();
+    const double built = graph->constructionSeconds();
+    SearchResult found = query();
+    stats.search_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
+    stats.expansions += found.expansions;
+    return found;
+  };
+
+  for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
+    if (round > 1) graph->expand();
+    HyperpathSearch search(*graph);
+    const SearchResult greedy = search_timed([&] { return search.greedy(search_budget); });
+    if (greedy.status == SearchStatus::kFound) resolve(*greedy.plan);
+    if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
+    if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
+    if (settings.method == Method::kOptimal && !time_up()) {
+      // Next-Best Search: task plans in order of optimistic makespan until no better is possible
+      for (int k = 0; k < settings.next_best_plans && !time_up(); ++k) {
+        const SearchResult next = search_timed([&] { return search.nextBest(search_budget); });
+        if (next.status != SearchStatus::kFound || next.plan->makespan() >= best) break;
+        resolve(*next.plan);
+      }
+    }
+    if (best_schedule) break;
+  }
+  record();
+  if (!best_schedule) {
+    result.status = PlannerStatus::kTimeout;
+    result.reason = (time_up() ? "time budget exhausted after " : "no plan after ") + std::to_string(graph->rounds()) +
+                    " rounds of representation expansion: " + last_failure;
+    return result;
+  }
+  stats.makespan = toSeconds(best);
+  result.status = PlannerStatus::kSolved;
+  result.plan = writePlan(*graph, *best_history, *best_schedule);
+  result.plan->seed = settings.seed;
+  result.plan->statistics = planStatistics(settings, stats);
+  return result;
+}
+
+}  // namespace dashbed::planner

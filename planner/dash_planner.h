@@ -1,0 +1,76 @@
+#pragma once
+// The DaSH planner for multi-manipulator rearrangement (paper: Method > Overview, Alg. 3):
+// build the task-space hypergraph (Alg. 1) and the motion hypergraph (Alg. 2), query a task
+// plan on the transition-extended hypergraph (Alg. 4), resolve conflicts (scheduled CBS), and
+// expand the representation by a round when that fails.
+//
+//  Method::kGreedy   Greedy-MM-DaSH: one greedy hyperpath query per round; the first plan whose
+//                    conflicts resolve is returned (earlyTermination from the start).
+//  Method::kOptimal  MM-DaSH: Next-Best Search (Alg. 5) with the A*-like hyperpath query on the
+//                    current representation, starting from the greedy plan as the upper bound
+//                    (so it is never worse), until the next task plan's optimistic makespan is
+//                    no better than the best resolved plan. With a deadline it is anytime: the
+//                    best plan so far is returned when time is up.
+//
+// One entry point, solve(); infeasible problems and timeouts are statuses, not exceptions.
+// The plan is deterministic for a world, settings and seed; wall-clock times are reported in
+// PlannerStats only, never in the plan.
+
+#include <chrono>
+#include <cstdint>
+#include <optional>
+#include <string>
+
+#include "core/plan.h"
+#include "core/world_loader.h"
+#include "planner/motion_hypergraph.h"
+
+namespace dashbed::planner {
+
+enum class Method { kGreedy, kOptimal };
+enum class PlannerStatus { kSolved, kInfeasible, kTimeout };
+
+struct PlannerSettings {
+  Method method = Method::kGreedy;
+  std::uint64_t seed = 1;
+  int max_rounds = 30;                        ///< representation expansions before giving up
+  std::uint64_t search_expansions = 20000;    ///< per hyperpath query
+  int conflict_nodes = 500;                   ///< per conflict resolution
+  int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search
+  RepresentationSettings representation;
+};
+
+/// A wall-clock deadline (std::nullopt: none; iteration caps still apply).
+struct PlannerBudget {
+  std::optional<std::chrono::steady_clock::time_point> deadline;
+};
+
+struct PlannerStats {
+  double construction_seconds = 0.0;  ///< task-space + motion hypergraph (sampling, roadmaps, moves)
+  double search_seconds = 0.0;        ///< hyperpath queries (excluding the construction they trigger)
+  double conflict_seconds = 0.0;      ///< conflict resolution
+  int rounds = 0;
+  std::size_t task_vertices = 0, task_hyperarcs = 0;
+  std::size_t motion_vertices = 0, motion_transitions = 0, motion_moves = 0;
+  std::size_t roadmaps = 0, roadmap_nodes = 0;
+  std::uint64_t expansions = 0;  ///< hyperpath-search expansions, all rounds
+  int task_plans = 0;            ///< task plans given to conflict resolution
+  int conflict_nodes = 0;        ///< conflict-resolution nodes, all task plans
+  int scheduling_constraints = 0;  ///< precedences added by conflict resolution in the plan
+  double optimistic_makespan = 0.0;  ///< of the task plan returned [s]
+  double makespan = 0.0;             ///< of the plan [s]
+};
+
+struct PlanResult {
+  PlannerStatus status = PlannerStatus::kInfeasible;
+  std::string reason;  ///< why not solved (names the object, robot or region)
+  std::optional<core::Plan> plan;
+  PlannerStats stats;
+};
+
+PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget = {});
+
+const char* toString(Method method);
+const char* toString(PlannerStatus status);
+
+}  // namespace dashbed::planner

@@ -1,0 +1,416 @@
+#include "planner/hyperpath_search.h"
+
+#include <algorithm>
+#include <limits>
+#include <map>
+#include <queue>
+#include <tuple>
+
+namespace dashbed::planner {
+
+/// A transition that can extend a history, with the key the greedy query orders by.
+struct HyperpathSearch::Candidate {
+  int transition = -1;
+  Millis start = 0;       ///< lower bound of the start (estimate), or the exact start once evaluated
+  Millis remaining = 0;   ///< the object's cost to go before the transition (critical path first)
+  bool exact = false;
+
+  auto key() const { return std::make_tuple(start, -remaining, transition); }
+};
+
+/// The A*-like query's frontier, kept between nextBest() calls.
+struct HyperpathSearch::AStarState {
+  struct Entry {
+    Millis f;
+    std::uint64_t order;  // insertion order: ties pop first-in first
+    std::size_t node;
+    bool operator>(const Entry& other) const { return std::tie(f, order) > std::tie(other.f, other.order); }
+  };
+  std::vector<TransitionHistory> nodes;
+  std::priority_queue<Entry, std::vector<Entry>, std::greater<>> frontier;
+  std::uint64_t pushed = 0;
+  /// Dominance: histories with the same bodies at the same vertices, by their times.
+  std::map<std::vector<long long>, std::vector<std::vector<Millis>>> seen;
+};
+
+namespace {
+
+constexpr Millis kUnreachable = -1;
+/// Samples per hyperarc and grasp the A*-like query branches on (the fastest ones).
+constexpr std::size_t kAStarSamplesPerHyperarc = 2;
+
+}  // namespace
+
+HyperpathSearch::HyperpathSearch(MotionHypergraph& graph) : graph_(&graph) { updateCostToGo(); }
+HyperpathSearch::~HyperpathSearch() = default;
+
+Millis HyperpathSearch::costToGo(int object, int task_vertex) const {
+  return cost_to_go_.at(object).at(task_vertex);
+}
+
+void HyperpathSearch::updateCostToGo() {
+  const TaskSpaceHypergraph& ts = graph_->taskSpace();
+  const ObjectSites& sites = graph_->sites();
+  const Millis dwell = ceilMillis(graph_->settings().transitions.gripper_dwell);
+  const auto duration = [&](int h) { return graph_->bestDuration(h).value_or(dwell); };
+  cost_to_go_.assign(ts.numObjects(), std::vector<Millis>(ts.numVertices(), kUnreachable));
+  for (int o = 0; o < ts.numObjects(); ++o) {
+    std::vector<Millis>& cost = cost_to_go_[o];
+    if (!sites.goal[o]) {
+      cost[ts.objectRestingVertex(o)] = 0;  // stays where it is
+      continue;
+    }
+    const auto relax = [&](int v, Millis c) {
+      if (cost[v] == kUnreachable || c < cost[v]) {
+        cost[v] = c;
+        return true;
+      }
+      return false;
+    };
+    // Bellman-Ford backwards from the goal over this object's vertices (at most n robots deep)
+    for (bool changed = true; changed;) {
+      changed = false;
+      for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
+        const TransitionHyperarc& arc = ts.hyperarcs()[h];
+        if (arc.object != o) continue;
+        const int hi = static_cast<int>(h);
+        if (arc.kind == TransitionKind::kPlace) {
+          changed |= relax(ts.holdingVertex(arc.robot, o), duration(hi));
+        } else if (arc.kind == TransitionKind::kHandoff) {
+          const Millis after = cost[ts.holdingVertex(arc.receiver, o)];
+          if (after != kUnreachable) changed |= relax(ts.holdingVertex(arc.robot, o), duration(hi) + after);
+        } else {
+          const Millis after = cost[ts.holdingVertex(arc.robot, o)];
+          if (after != kUnreachable) changed |= relax(ts.objectRestingVertex(o), duration(hi) + after);
+        }
+      }
+    }
+  }
+}
+
+std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const TransitionHistory& history) {
+  const TaskSpaceHypergraph& ts = graph_->taskSpace();
+  const ObjectSites& sites = graph_->sites();
+  const SiteSet occupied = history.occupied(sites.numSites());
+  std::vector<Candidate> result;
+  for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = ts.hyperarcs()[h];
+    const int o = arc.object;
+    if (!sites.goal[o]) continue;
+    const TransitionHistory::ObjectState& object = history.objects[o];
+    const TransitionHistory::RobotState& robot = history.robots[arc.robot];
+    int grasp = -1;
+    Millis before = 0, after = 0;  // the object's cost to go before and after the transition
+    switch (arc.kind) {
+      case TransitionKind::kPick:
+        if (object.place != ObjectPlace::kStart || robot.object != -1) continue;
+        before = costToGo(o, ts.objectRestingVertex(o));
+        after = costToGo(o, ts.holdingVertex(arc.robot, o));
+        if (after == kUnreachable) continue;
+        break;
+      case TransitionKind::kPlace:
+        if (robot.object != o) continue;
+        grasp = robot.grasp;
+        before = costToGo(o, ts.holdingVertex(arc.robot, o));
+        break;
+      case TransitionKind::kHandoff:
+        if (robot.object != o || history.robots[arc.receiver].object != -1) continue;
+        grasp = robot.grasp;
+        before = costToGo(o, ts.holdingVertex(arc.robot, o));
+        after = costToGo(o, ts.holdingVertex(arc.receiver, o));
+        if (after == kUnreachable || before == kUnreachable || after >= before) continue;  // only towards the goal
+        break;
+    }
+    for (const int id : graph_->transitionsOf(static_cast<int>(h), grasp)) {
+      const TransitionSample& sample = graph_->transition(id).sample;
+      if (sample.touches.intersects(occupied)) continue;
+      Millis start = object.since;
+      for (const TransitionMotion& motion : sample.motions) {
+        const TransitionHistory::RobotState& r = history.robots[motion.robot];
+        start = std::max(start, r.free + restToRestDuration(r.q, motion.start(), graph_->timing()));
+      }
+      if (arc.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[ObjectSites::goalSite(o)]);
+      result.push_back({id, start, before, false});
+    }
+  }
+  return result;
+}
+
+std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory& history, const Candidate& candidate) {
+  const MotionTransition& transition = graph_->transition(candidate.transition);
+  const TransitionSample& sample = transition.sample;
+  const ObjectSites& sites = graph_->sites();
+  const SiteSet occupied = history.occupied(sites.numSites());
+  const int o = sample.object;
+  TransitionHistory next = history;
+
+  // objects whose start sites a motion touches must have left them before it starts
+  const auto after_left = [&](const SiteSet& touches, Millis t) {
+    for (int b = 0; b < sites.numObjects(); ++b) {
+      if (touches.test(ObjectSites::startSite(b))) t = std::max(t, history.objects[b].since);
+    }
+    return t;
+  };
+  // ... and goal sites it touches stay busy until it ends
+  const auto mark_busy = [&](const SiteSet& touches, Millis end) {
+    for (int s = 1; s < sites.numSites(); s += 2) {
+      if (touches.test(s)) next.site_busy[s] = std::max(next.site_busy[s], end);
+    }
+  };
+
+  ScheduledTransition step;
+  step.transition = candidate.transition;
+  Millis start = history.objects[o].since;
+  for (const TransitionMotion& motion : sample.motions) {
+    const TransitionHistory::RobotState& r = history.robots[motion.robot];
+    const Move* move = graph_->move(motion.robot, r.object, r.grasp, r.q, motion.start(), occupied);
+    if (move == nullptr) return std::nullopt;
+    const Millis move_start = after_left(move->touches, r.free);
+    step.moves.push_back(move);
+    step.move_starts.push_back(move_start);
+    mark_busy(move->touches, move_start + move->duration);
+    start = std::max(start, move_start + move->duration);
+  }
+  if (sample.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[ObjectSites::goalSite(o)]);
+  start = after_left(sample.touches, start);
+  step.start = start;
+  const Millis end = start + sample.duration;
+  mark_busy(sample.touches, end);
+
+  for (const TransitionMotion& motion : sample.motions) {
+    next.robots[motion.robot].q = motion.end();
+    next.robots[motion.robot].free = end;
+  }
+  const auto holder_grasp = [&](int head_index) { return graph_->vertex(transition.head[head_index]).grasp; };
+  TransitionHistory::ObjectState& object = next.objects[o];
+  object.since = end;
+  switch (sample.kind) {
+    case TransitionKind::kPick:
+      object.place = ObjectPlace::kHeld;
+      object.holder = sample.motions[0].robot;
+      next.robots[object.holder].object = o;
+      next.robots[object.holder].grasp = holder_grasp(0);
+      break;
+    case TransitionKind::kPlace:
+      object.place = ObjectPlace::kGoal;
+      next.robots[object.holder].object = next.robots[object.holder].grasp = -1;
+      object.holder = -1;
+      break;
+    case TransitionKind::kHandoff:
+      next.robots[object.holder].object = next.robots[object.holder].grasp = -1;
+      object.holder = sample.motions[1].robot;
+      next.robots[object.holder].object = o;
+      next.robots[object.holder].grasp = holder_grasp(1);
+      break;
+  }
+  next.steps.push_back(std::move(step));
+  return next;
+}
+
+std::optional<TransitionHistory> HyperpathSearch::finish(const TransitionHistory& history) {
+  TransitionHistory done = history;
+  const SiteSet occupied = history.occupied(graph_->sites().numSites());
+  for (std::size_t r = 0; r < history.robots.size(); ++r) {
+    const TransitionHistory::RobotState& robot = history.robots[r];
+    const core::ArmConfig& home = graph_->world().world->robots[r].home;
+    const Move* move = robot.q == home ? nullptr : graph_->move(static_cast<int>(r), -1, -1, robot.q, home, occupied);
+    if (robot.q != home && move == nullptr) return std::nullopt;
+    done.home_moves.push_back(move);
+    done.home_starts.push_back(robot.free);
+  }
+  return done;
+}
+
+bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
+  // A holding robot progresses when it can place its object, or hand it (towards the goal) to
+  // a robot that is free or itself progresses. Holding robots that cannot wait on each other.
+  const TaskSpaceHypergraph& ts = graph_->taskSpace();
+  const std::size_t n = history.robots.size();
+  std::vector<bool> progresses(n, false);
+  for (bool changed = true; changed;) {
+    changed = false;
+    for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
+      const TransitionHyperarc& arc = ts.hyperarcs()[h];
+      const int r = arc.robot;
+      if (progresses[r] || history.robots[r].object != arc.object || arc.kind == TransitionKind::kPick) continue;
+      bool ok = arc.kind == TransitionKind::kPlace;
+      if (arc.kind == TransitionKind::kHandoff) {
+        const Millis before = costToGo(arc.object, ts.holdingVertex(r, arc.object));
+        const Millis after = costToGo(arc.object, ts.holdingVertex(arc.receiver, arc.object));
+        ok = after != kUnreachable && after < before &&
+             (history.robots[arc.receiver].object == -1 || progresses[arc.receiver]);
+      }
+      if (ok) progresses[r] = changed = true;
+    }
+  }
+  for (std::size_t r = 0; r < n; ++r) {
+    if (history.robots[r].object != -1 && !progresses[r]) return true;
+  }
+  return false;
+}
+
+Millis HyperpathSearch::lowerBound(const TransitionHistory& history) const {
+  const TaskSpaceHypergraph& ts = graph_->taskSpace();
+  Millis bound = 0;
+  for (std::size_t r = 0; r < history.robots.size(); ++r) {
+    const TransitionHistory::RobotState& robot = history.robots[r];
+    bound = std::max(bound, robot.free + restToRestDuration(robot.q, graph_->world().world->robots[r].home,
+                                                            graph_->timing()));
+  }
+  for (std::size_t o = 0; o < history.objects.size(); ++o) {
+    const TransitionHistory::ObjectState& object = history.objects[o];
+    const int oi = static_cast<int>(o);
+    if (object.place == ObjectPlace::kGoal) continue;
+    const int v = object.place == ObjectPlace::kStart ? ts.objectRestingVertex(oi) : ts.holdingVertex(object.holder, oi);
+    const Millis to_go = costToGo(oi, v);
+    if (to_go == kUnreachable) return std::numeric_limits<Millis>::max();
+    bound = std::max(bound, object.since + to_go);
+  }
+  return bound;
+}
+
+SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
+  updateCostToGo();
+  using Queue = std::vector<Candidate>;  // a heap ordered by Candidate::key, smallest first
+  const auto later = [](const Candidate& a, const Candidate& b) { return a.key() > b.key(); };
+  struct Frame {
+    TransitionHistory history;
+    Queue queue;
+    bool expanded = false;
+  };
+  const ObjectSites& sites = graph_->sites();
+  SearchResult result;
+  std::vector<Frame> stack;
+  stack.push_back({TransitionHistory::source(*graph_), {}, false});
+  while (!stack.empty()) {
+    if (result.expansions >= budget.max_expansions || (budget.stop && budget.stop())) {
+      result.status = SearchStatus::kBudget;
+      return result;
+    }
+    Frame& frame = stack.back();
+    if (!frame.expanded) {
+      if (frame.history.complete(sites)) {
+        if (std::optional<TransitionHistory> done = finish(frame.history)) {
+          result.status = SearchStatus::kFound;
+          result.plan = std::move(done);
+          return result;
+        }
+        stack.pop_back();
+        continue;
+      }
+      frame.queue = candidates(frame.history);
+      std::make_heap(frame.queue.begin(), frame.queue.end(), later);
+      frame.expanded = true;
+      ++result.expansions;
+    }
+    // lazy evaluation: a candidate's exact start (with its moves) is computed when it comes
+    // first; it is taken when it still comes first with the exact value
+    std::optional<TransitionHistory> child;
+    while (!frame.queue.empty() && !child) {
+      std::pop_heap(frame.queue.begin(), frame.queue.end(), later);
+      Candidate candidate = frame.queue.back();
+      frame.queue.pop_back();
+      std::optional<TransitionHistory> next = apply(frame.history, candidate);
+      if (!next || deadlocked(*next)) continue;
+      const Millis exact = next->steps.back().start;
+      if (!candidate.exact && !frame.queue.empty() && exact > frame.queue.front().start) {
+        candidate.start = exact;
+        candidate.exact = true;
+        frame.queue.push_back(candidate);
+        std::push_heap(frame.queue.begin(), frame.queue.end(), later);
+        continue;
+      }
+      child = std::move(next);
+    }
+    if (!child) {
+      stack.pop_back();  // backtrack
+      continue;
+    }
+    stack.push_back({std::move(*child), {}, false});
+  }
+  result.status = SearchStatus::kExhausted;
+  return result;
+}
+
+SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
+  updateCostToGo();
+  const ObjectSites& sites = graph_->sites();
+  if (!astar_) {
+    astar_ = std::make_unique<AStarState>();
+    astar_->nodes.push_back(TransitionHistory::source(*graph_));
+    astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
+  }
+  AStarState& a = *astar_;
+  // the bodies' vertices (the dominance key) and their times
+  const auto signature = [](const TransitionHistory& h) {
+    std::vector<long long> key;
+    std::vector<Millis> times;
+    for (const auto& r : h.robots) {
+      key.push_back(r.object);
+      key.push_back(r.grasp);
+      for (const double q : r.q) key.push_back(std::llround(q * 1e9));
+      times.push_back(r.free);
+    }
+    for (const auto& o : h.objects) {
+      key.push_back(static_cast<long long>(o.place));
+      key.push_back(o.holder);
+      times.push_back(o.since);
+    }
+    times.insert(times.end(), h.site_busy.begin(), h.site_busy.end());
+    return std::make_pair(key, times);
+  };
+  const auto dominated = [&](const TransitionHistory& h) {
+    auto [key, times] = signature(h);
+    std::vector<std::vector<Millis>>& list = a.seen[key];
+    for (const std::vector<Millis>& other : list) {
+      if (std::equal(other.begin(), other.end(), times.begin(), [](Millis x, Millis y) { return x <= y; })) return true;
+    }
+    list.push_back(std::move(times));
+    return false;
+  };
+
+  SearchResult result;
+  while (!a.frontier.empty()) {
+    if (result.expansions >= budget.max_expansions || (budget.stop && budget.stop())) {
+      result.status = SearchStatus::kBudget;
+      return result;
+    }
+    const AStarState::Entry entry = a.frontier.top();
+    a.frontier.pop();
+    if (!a.nodes[entry.node].home_moves.empty()) {  // a complete history: the next best
+      result.status = SearchStatus::kFound;
+      result.plan = a.nodes[entry.node];
+      return result;
+    }
+    const TransitionHistory history = a.nodes[entry.node];
+    ++result.expansions;
+    // branch on the fastest samples of each hyperarc
+    std::vector<Candidate> all = candidates(history);
+    std::stable_sort(all.begin(), all.end(), [&](const Candidate& x, const Candidate& y) {
+      const TransitionSample& sx = graph_->transition(x.transition).sample;
+      const TransitionSample& sy = graph_->transition(y.transition).sample;
+      return std::tie(sx.hyperarc, sx.duration, x.transition) < std::tie(sy.hyperarc, sy.duration, y.transition);
+    });
+    std::map<int, std::size_t> per_hyperarc;
+    for (const Candidate& candidate : all) {
+      if (per_hyperarc[graph_->transition(candidate.transition).sample.hyperarc]++ >= kAStarSamplesPerHyperarc) continue;
+      std::optional<TransitionHistory> child = apply(history, candidate);
+      if (!child || deadlocked(*child)) continue;
+      Millis f = 0;
+      if (child->complete(sites)) {
+        child = finish(*child);
+        if (!child) continue;
+        f = child->makespan();
+      } else {
+        f = lowerBound(*child);
+        if (f == std::numeric_limits<Millis>::max() || dominated(*child)) continue;
+      }
+      a.nodes.push_back(std::move(*child));
+      a.frontier.push({f, a.pushed++, a.nodes.size() - 1});
+    }
+  }
+  result.status = SearchStatus::kExhausted;
+  return result;
+}
+
+}  // namespace dashbed::planner

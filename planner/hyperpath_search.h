@@ -1,0 +1,91 @@
+#pragma once
+// Hyperpath queries on the implicit transition-extended hypergraph (paper: Method >
+// Transition-extended Hypergraph, Alg. 4; Method Variants > Task Planning).
+//
+// A search node is a transition history (its "head": the motion vertex of every body and the
+// time it gets there). Its successors append one transition hyperarc whose tail is complete in
+// the history — the robots and the object it needs are at the right task-space vertices, and
+// for places and handoffs the object is held in the grasp the sample needs — preceded by the
+// move hyperarcs bringing each robot to the sample's start. The transition starts at the latest
+// of its tail's times (tail weight = max). Transitions that would touch an occupied object site
+// are not available (vertex-hyperarc scheduling constraints); the site stays "busy" for the
+// time the motion runs so that a later placement there waits for it.
+//
+// Route pruning. An object is only moved along its task-space route: picked by a robot from
+// which its goal can be reached, handed to a robot nearer its goal (by the cost-to-go below),
+// and a history in which holding robots wait on each other in a cycle (each needs to hand its
+// object to another holding robot) is abandoned.
+//
+// Cost-to-go (the A*-like query's heuristic): for each object and task-space vertex, the
+// cheapest sum of sampled transition durations to its goal on the task-space hypergraph
+// (objects only, robots assumed free: a lower bound on the remaining makespan for that
+// object); unsampled hyperarcs count with the gripper dwell, a lower bound of any transition.
+//
+//  greedy()    Greedy hyperpath query: builds one history a hyperarc at a time, choosing the
+//              transition that can start earliest (list scheduling; ties: fewer remaining
+//              cost, then ids), with backtracking (depth first) when a history cannot be
+//              completed.
+//  nextBest()  A*-like hyperpath query ordered by f = max(robot times, object time + cost to
+//              go); successive calls return complete histories in order of nondecreasing
+//              optimistic makespan (the next-best task plan of Next-Best Search, Alg. 5).
+
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/motion_hypergraph.h"
+#include "planner/transition_history.h"
+
+namespace dashbed::planner {
+
+/// Limits of one query. Iteration caps make tests reproducible; users add a deadline.
+struct SearchBudget {
+  std::uint64_t max_expansions = 100000;  ///< histories expanded
+  std::function<bool()> stop;              ///< returns true when time is up (may be empty)
+};
+
+enum class SearchStatus {
+  kFound,      ///< a complete history (task plan) was found
+  kExhausted,  ///< the current representation holds no (further) complete history
+  kBudget,     ///< the budget ran out first
+};
+
+struct SearchResult {
+  SearchStatus status = SearchStatus::kExhausted;
+  std::optional<TransitionHistory> plan;  ///< complete, with the moves home
+  std::uint64_t expansions = 0;
+};
+
+class HyperpathSearch {
+ public:
+  /// `graph` is extended on demand (transitions sampled, moves planned) and must outlive the
+  /// search.
+  explicit HyperpathSearch(MotionHypergraph& graph);
+  ~HyperpathSearch();
+
+  SearchResult greedy(const SearchBudget& budget);
+  /// The next-best complete history of the A*-like query (the frontier is kept between calls).
+  SearchResult nextBest(const SearchBudget& budget);
+
+  /// Cost-to-go of object o at task-space vertex v [ms] (infinite: -1).
+  Millis costToGo(int object, int task_vertex) const;
+
+ private:
+  struct Candidate;
+  struct AStarState;
+  std::vector<Candidate> candidates(const TransitionHistory& history);
+  std::optional<TransitionHistory> apply(const TransitionHistory& history, const Candidate& candidate);
+  std::optional<TransitionHistory> finish(const TransitionHistory& history);
+  bool deadlocked(const TransitionHistory& history) const;
+  Millis lowerBound(const TransitionHistory& history) const;
+  void updateCostToGo();
+
+  MotionHypergraph* graph_;
+  std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
+  std::unique_ptr<AStarState> astar_;
+};
+
+}  // namespace dashbed::planner

@@ -1,0 +1,270 @@
+#include "planner/motion_hypergraph.h"
+
+#include <algorithm>
+#include <chrono>
+#include <random>
+#include <stdexcept>
+#include <string>
+
+namespace dashbed::planner {
+namespace {
+
+/// splitmix64's finaliser: decorrelates seeds built from small integers.
+std::uint64_t mix(std::uint64_t x) {
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+std::uint64_t seedOf(std::uint64_t seed, std::uint64_t a, std::uint64_t b, std::uint64_t c) {
+  return mix(mix(mix(mix(seed) ^ a) ^ b) ^ c);
+}
+
+/// Adds the wall-clock time of its scope to a counter [s].
+class ScopedTimer {
+ public:
+  explicit ScopedTimer(double& total) : total_(&total), start_(std::chrono::steady_clock::now()) {}
+  ~ScopedTimer() { *total_ += std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count(); }
+  ScopedTimer(const ScopedTimer&) = delete;
+  ScopedTimer& operator=(const ScopedTimer&) = delete;
+
+ private:
+  double* total_;
+  std::chrono::steady_clock::time_point start_;
+};
+
+constexpr double kFingersOpen = 0.025;  // [m] each finger, a robot alone (Hand-E stroke, core/grasps.h)
+
+}  // namespace
+
+void RepresentationSettings::validate() const {
+  const auto require = [](bool ok, const char* field, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("representation settings: ") + field + ": " + what);
+  };
+  require(initial_roadmap_samples >= 0, "initial_roadmap_samples", "must be >= 0");
+  require(roadmap_samples_per_round >= 0, "roadmap_samples_per_round", "must be >= 0");
+  require(handoff_samples_per_round >= 1, "handoff_samples_per_round", "must be >= 1");
+  require(velocity_fraction > 0.0 && velocity_fraction <= 1.0, "velocity_fraction", "must be in (0, 1]");
+  require(max_acceleration > 0.0, "max_acceleration", "must be positive");
+  collision.validate();
+}
+
+MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
+                                   std::uint64_t seed, const RepresentationSettings& settings)
+    : world_(&world), task_space_(&task_space), seed_(seed), settings_(settings) {
+  const ScopedTimer timer(construction_seconds_);
+  settings_.validate();
+  scene_ = std::make_unique<CollisionScene>(*world.world, *world.robots, settings_.collision);
+  sites_ = objectSites(*world.world);
+  sampler_ = std::make_unique<TransitionSampler>(world, task_space, *scene_, sites_, settings_.transitions);
+  // every robot of a world is a UR5e: the first one's limits stand for all
+  const core::RobotModel& model = *world.robots->robots().front().model;
+  for (int j = 0; j < 6; ++j) {
+    timing_.max_velocity[j] = settings_.velocity_fraction * model.joints()[model.movableJoints()[j]].max_velocity;
+    timing_.max_acceleration[j] = settings_.max_acceleration;
+  }
+  grasps_.resize(world.world->objects.size());
+
+  // the start and goal decomposition (virtual source and target)
+  for (int r = 0; r < task_space.numRobots(); ++r) {
+    const int home = robotVertex(r, world.world->robots[r].home);
+    source_.push_back(home);
+    target_.push_back(home);
+  }
+  for (int o = 0; o < task_space.numObjects(); ++o) {
+    source_.push_back(siteVertex(ObjectSites::startSite(o)));
+    target_.push_back(siteVertex(sites_.goal[o] ? ObjectSites::goalSite(o) : ObjectSites::startSite(o)));
+  }
+}
+
+MotionHypergraph::~MotionHypergraph() = default;
+
+int MotionHypergraph::addVertex(const MotionVertex& vertex) {
+  const auto key = std::make_tuple(vertex.task_vertex, vertex.grasp, vertex.site, vertex.q);
+  const auto [it, added] = vertex_ids_.emplace(key, static_cast<int>(vertices_.size()));
+  if (added) vertices_.push_back(vertex);
+  return it->second;
+}
+
+int MotionHypergraph::robotVertex(int robot, const core::ArmConfig& q) {
+  return addVertex({task_space_->robotAloneVertex(robot), q, -1, -1});
+}
+
+int MotionHypergraph::holdingVertex(int robot, int object, int grasp, const core::ArmConfig& q) {
+  return addVertex({task_space_->holdingVertex(robot, object), q, grasp, -1});
+}
+
+int MotionHypergraph::siteVertex(int site) {
+  return addVertex({task_space_->objectRestingVertex(site / 2), {}, -1, site});
+}
+
+int MotionHypergraph::graspId(int object, const Grasp& grasp) {
+  std::vector<Grasp>& grasps = grasps_.at(object);
+  for (std::size_t i = 0; i < grasps.size(); ++i) {
+    if (sameGrasp(grasps[i], grasp)) return static_cast<int>(i);
+  }
+  grasps.push_back(grasp);
+  return static_cast<int>(grasps.size()) - 1;
+}
+
+void MotionHypergraph::addTransition(TransitionSample sample) {
+  const TransitionHyperarc& arc = task_space_->hyperarcs().at(sample.hyperarc);
+  const int o = arc.object;
+  MotionTransition transition;
+  switch (arc.kind) {
+    case TransitionKind::kPick: {
+      const int grasp = graspId(o, *sample.grasp_after);
+      transition.tail = {robotVertex(arc.robot, sample.motions[0].start()), siteVertex(ObjectSites::startSite(o))};
+      transition.head = {holdingVertex(arc.robot, o, grasp, sample.motions[0].end())};
+      break;
+    }
+    case TransitionKind::kPlace: {
+      const int grasp = graspId(o, *sample.grasp_before);
+      transition.tail = {holdingVertex(arc.robot, o, grasp, sample.motions[0].start())};
+      transition.head = {robotVertex(arc.robot, sample.motions[0].end()), siteVertex(ObjectSites::goalSite(o))};
+      break;
+    }
+    case TransitionKind::kHandoff: {
+      const int before = graspId(o, *sample.grasp_before), after = graspId(o, *sample.grasp_after);
+      transition.tail = {holdingVertex(arc.robot, o, before, sample.motions[0].start()),
+                         robotVertex(arc.receiver, sample.motions[1].start())};
+      transition.head = {robotVertex(arc.robot, sample.motions[0].end()),
+                         holdingVertex(arc.receiver, o, after, sample.motions[1].end())};
+      break;
+    }
+  }
+  transition.sample = std::move(sample);
+  transitions_.push_back(std::move(transition));
+}
+
+void MotionHypergraph::sampleHandoffs(int hyperarc, int grasp, int round) {
+  const TransitionHyperarc& arc = task_space_->hyperarcs().at(hyperarc);
+  std::mt19937_64 rng(seedOf(seed_, static_cast<std::uint64_t>(hyperarc), static_cast<std::uint64_t>(grasp),
+                             static_cast<std::uint64_t>(round)));
+  const Grasp held = grasps_.at(arc.object).at(grasp);  // a copy: sampling may add grasps
+  std::vector<int>& ids = transitions_of_[{hyperarc, grasp}];
+  for (TransitionSample& sample : sampler_->handoff(hyperarc, held, rng, settings_.handoff_samples_per_round)) {
+    ids.push_back(static_cast<int>(transitions_.size()));
+    addTransition(std::move(sample));
+  }
+}
+
+const std::vector<int>& MotionHypergraph::transitionsOf(int hyperarc, int grasp) {
+  const TransitionHyperarc& arc = task_space_->hyperarcs().at(hyperarc);
+  const std::pair<int, int> key{hyperarc, arc.kind == TransitionKind::kPick ? -1 : grasp};
+  if (const auto it = transitions_of_.find(key); it != transitions_of_.end()) return it->second;
+  const ScopedTimer timer(construction_seconds_);
+  if (arc.kind == TransitionKind::kHandoff) {
+    // catch up with every round so far, as if the grasp had been known from the start
+    for (int round = 1; round <= round_; ++round) sampleHandoffs(hyperarc, grasp, round);
+    return transitions_of_[key];
+  }
+  std::vector<TransitionSample> samples =
+      arc.kind == TransitionKind::kPick ? sampler_->pick(hyperarc) : sampler_->place(hyperarc, grasps_.at(arc.object).at(grasp));
+  std::vector<int> ids;
+  for (TransitionSample& sample : samples) {
+    ids.push_back(static_cast<int>(transitions_.size()));
+    addTransition(std::move(sample));
+  }
+  return transitions_of_[key] = std::move(ids);
+}
+
+Roadmap& MotionHypergraph::roadmap(int robot, int object, int grasp) {
+  const auto key = std::make_tuple(robot, object, grasp);
+  if (const auto it = roadmaps_.find(key); it != roadmaps_.end()) return it->second;
+  std::optional<HeldObject> held;
+  double finger = kFingersOpen;
+  if (object >= 0) {
+    const Grasp& g = grasps_.at(object).at(grasp);
+    held = HeldObject{object, g.X_OT.inverse(), true};
+    finger = g.finger;
+  }
+  Roadmap map(*scene_, sites_, robot, held, finger,
+              seedOf(seed_, static_cast<std::uint64_t>(robot), static_cast<std::uint64_t>(object + 1),
+                     static_cast<std::uint64_t>(grasp + 1)),
+              settings_.roadmap);
+  map.grow(settings_.initial_roadmap_samples + (round_ - 1) * settings_.roadmap_samples_per_round);
+  return roadmaps_.emplace(key, std::move(map)).first->second;
+}
+
+const Move* MotionHypergraph::move(int robot, int object, int grasp, const core::ArmConfig& from,
+                                   const core::ArmConfig& to, const SiteSet& occupied) {
+  std::vector<bool> occupied_bits(static_cast<std::size_t>(sites_.numSites()));
+  for (int s = 0; s < sites_.numSites(); ++s) occupied_bits[s] = occupied.test(s);
+  const auto key = std::make_tuple(robot, object, grasp, from, to, occupied_bits);
+  if (const auto it = moves_.find(key); it != moves_.end()) return it->second ? &*it->second : nullptr;
+
+  const ScopedTimer timer(construction_seconds_);
+  std::optional<Move> result;
+  Roadmap& map = roadmap(robot, object, grasp);
+  const int a = map.addConfiguration(from), b = map.addConfiguration(to);
+  std::optional<std::vector<core::ArmConfig>> path;
+  if (a >= 0 && b >= 0) path = a == b ? std::vector<core::ArmConfig>{from} : map.query(a, b, occupied);
+  if (path) {
+    Move m;
+    m.robot = robot;
+    m.object = object;
+    m.grasp = grasp;
+    m.duration = polylineDuration(*path, timing_);
+    // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile
+    m.touches = SiteSet(sites_.numSites());
+    for (int s = 0; s < sites_.numSites(); ++s) {
+      if (occupied_bits[s] || !sites_.site(s) || s / 2 == object) continue;
+      SiteSet only(sites_.numSites());
+      only.set(s);
+      for (std::size_t i = 1; i < path->size(); ++i) {
+        if (!map.motionFree((*path)[i - 1], (*path)[i], only)) {
+          m.touches.set(s);
+          break;
+        }
+      }
+    }
+    m.path = std::move(*path);
+    result = std::move(m);
+  }
+  const auto it = moves_.emplace(key, std::move(result)).first;
+  return it->second ? &*it->second : nullptr;
+}
+
+int MotionHypergraph::expand() {
+  const ScopedTimer timer(construction_seconds_);
+  ++round_;
+  std::vector<std::pair<int, int>> handoff_keys;
+  for (const auto& [key, ids] : transitions_of_) {
+    if (task_space_->hyperarcs().at(key.first).kind == TransitionKind::kHandoff) handoff_keys.push_back(key);
+  }
+  for (const auto& [hyperarc, grasp] : handoff_keys) sampleHandoffs(hyperarc, grasp, round_);
+  for (auto& [key, map] : roadmaps_) map.grow(settings_.roadmap_samples_per_round);
+  // cached failures may now succeed; found moves stay valid
+  std::erase_if(moves_, [](const auto& entry) { return !entry.second.has_value(); });
+  return round_;
+}
+
+std::size_t MotionHypergraph::numMoves() const {
+  return static_cast<std::size_t>(std::count_if(moves_.begin(), moves_.end(), [](const auto& e) { return e.second.has_value(); }));
+}
+
+std::size_t MotionHypergraph::numRoadmapNodes() const {
+  std::size_t nodes = 0;
+  for (const auto& [key, map] : roadmaps_) nodes += static_cast<std::size_t>(map.numNodes());
+  return nodes;
+}
+
+std::vector<int> MotionHypergraph::verticesOf(int task_vertex) const {
+  std::vector<int> ids;
+  for (std::size_t v = 0; v < vertices_.size(); ++v) {
+    if (vertices_[v].task_vertex == task_vertex) ids.push_back(static_cast<int>(v));
+  }
+  return ids;
+}
+
+std::optional<Millis> MotionHypergraph::bestDuration(int hyperarc) const {
+  std::optional<Millis> best;
+  for (const MotionTransition& t : transitions_) {
+    if (t.sample.hyperarc == hyperarc && (!best || t.sample.duration < *best)) best = t.sample.duration;
+  }
+  return best;
+}
+
+}  // namespace dashbed::planner

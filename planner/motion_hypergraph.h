@@ -1,0 +1,173 @@
+#pragma once
+// The motion hypergraph H_M of the DaSH method (paper: Method > Motion Hypergraph, Alg. 2),
+// grounded on a task-space hypergraph H_T.
+//
+//  motion vertices      a task-space vertex with a configuration: a robot alone or holding an
+//                       object (the arm configuration, and for holding the grasp), an object
+//                       resting at a site (its start or goal pose). The vertex map lists the
+//                       motion vertices of each task-space vertex.
+//  transition hyperarcs sampled instances of H_T's pick, place and handoff hyperarcs, each
+//                       carrying the timed motions of its robots (TransitionSampler).
+//  move hyperarcs       paths within one task-space element between two of its motion
+//                       vertices, from that element's roadmap: a robot alone, or a robot
+//                       holding one object in one grasp (Roadmap). They are planned on demand by
+//                       the search (implicit construction) and cached; a move depends on which
+//                       object sites are occupied while it runs.
+//  source and target    the virtual source leads to the start: every robot alone at its home
+//                       configuration, every object at its start site; the virtual target is
+//                       reached from every object with a goal resting at its goal site and every
+//                       robot alone at home.
+//
+// Construction follows Alg. 2 in rounds: the first round samples every pick hyperarc and grows
+// each roadmap when it is first used (RepresentationSettings::initial_roadmap_samples); place
+// and handoff hyperarcs are sampled for each grasp the search finds an object held in, the
+// first time it needs them (their tail vertex exists only once that grasp is reachable);
+// every later round (expand()) adds handoff samples for every grasp seen so far and grows
+// every roadmap by roadmap_samples_per_round. Sampling is seeded per hyperarc, grasp and
+// round, so the hypergraph does not depend on the order in which the search asks.
+
+#include <cstdint>
+#include <deque>
+#include <map>
+#include <memory>
+#include <optional>
+#include <tuple>
+#include <vector>
+
+#include "core/world_loader.h"
+#include "planner/collision_checker.h"
+#include "planner/object_sites.h"
+#include "planner/roadmap.h"
+#include "planner/task_space_hypergraph.h"
+#include "planner/timing.h"
+#include "planner/transition_sampler.h"
+
+namespace dashbed::planner {
+
+struct RepresentationSettings {
+  int initial_roadmap_samples = 10;    ///< samples of a roadmap when it is created (paper: 10)
+  int roadmap_samples_per_round = 10;  ///< added to every roadmap per round (paper: 10)
+  int handoff_samples_per_round = 2;   ///< new samples per handoff hyperarc and giver grasp per round
+  double velocity_fraction = 0.6;      ///< move speed cap, fraction of each joint's velocity limit
+  double max_acceleration = 4.0;       ///< move acceleration cap for every joint [rad/s^2]
+  TransitionSettings transitions;
+  RoadmapSettings roadmap;
+  CollisionSettings collision;
+
+  /// Throws std::invalid_argument naming the field when a value is out of range.
+  void validate() const;
+};
+
+/// A motion vertex: a task-space vertex and a configuration of its bodies.
+struct MotionVertex {
+  int task_vertex = -1;
+  core::ArmConfig q{};  ///< robot alone / holding: the arm configuration
+  int grasp = -1;       ///< robot holding: index into graspsOf(object)
+  int site = -1;        ///< object resting: ObjectSites index (start or goal)
+};
+
+/// A sampled transition hyperarc: the sample and its tail and head motion vertices.
+struct MotionTransition {
+  TransitionSample sample;
+  std::vector<int> tail;  ///< motion vertex ids
+  std::vector<int> head;
+};
+
+/// A move hyperarc: a path of one robot within one element, timed rest to rest per piece.
+struct Move {
+  int robot = -1;
+  int object = -1;  ///< held object, or -1 for the robot alone
+  int grasp = -1;
+  std::vector<core::ArmConfig> path;  ///< both ends included; one point when already there
+  Millis duration = 0;
+  SiteSet touches;  ///< object sites the path would touch (all of them unoccupied when planned)
+};
+
+class MotionHypergraph {
+ public:
+  /// The references must outlive the hypergraph. Throws std::invalid_argument for bad settings
+  /// and std::runtime_error when a goal region has no room (objectSites).
+  MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space, std::uint64_t seed,
+                   const RepresentationSettings& settings = {});
+  ~MotionHypergraph();
+
+  const core::LoadedWorld& world() const { return *world_; }
+  const TaskSpaceHypergraph& taskSpace() const { return *task_space_; }
+  const CollisionScene& scene() const { return *scene_; }
+  const ObjectSites& sites() const { return sites_; }
+  const RepresentationSettings& settings() const { return settings_; }
+  const TimingLimits& timing() const { return timing_; }
+
+  /// Virtual source / target as motion vertex sets (the start and goal decomposition).
+  const std::vector<int>& sourceVertices() const { return source_; }
+  const std::vector<int>& targetVertices() const { return target_; }
+
+  /// The grasps an object has been seen held in (ids are indices).
+  const std::vector<Grasp>& graspsOf(int object) const { return grasps_.at(object); }
+
+  /// Transition hyperarcs sampling task-space hyperarc `hyperarc` whose tail needs the robot to
+  /// hold the object in `grasp` (place, handoff) — or any, for a pick (grasp -1). Samples on
+  /// first use. Ids index transition().
+  const std::vector<int>& transitionsOf(int hyperarc, int grasp);
+  const MotionTransition& transition(int id) const { return transitions_.at(id); }
+
+  /// The move hyperarc taking `robot` (alone when object == -1, else holding `object` in
+  /// `grasp`) from `from` to `to` without touching any `occupied` site, or nullptr when the
+  /// element's roadmap does not connect them yet. Cached; the pointer stays valid.
+  const Move* move(int robot, int object, int grasp, const core::ArmConfig& from, const core::ArmConfig& to,
+                   const SiteSet& occupied);
+
+  /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
+  /// growth. Returns the number of the round just completed (the first is 1).
+  int expand();
+  int rounds() const { return round_; }
+
+  const MotionVertex& vertex(int id) const { return vertices_.at(id); }
+  std::size_t numVertices() const { return vertices_.size(); }
+  std::size_t numTransitions() const { return transitions_.size(); }
+  std::size_t numMoves() const;
+  std::size_t numRoadmaps() const { return roadmaps_.size(); }
+  std::size_t numRoadmapNodes() const;
+  /// The vertex map: motion vertices of a task-space vertex, in id order.
+  std::vector<int> verticesOf(int task_vertex) const;
+
+  /// Wall-clock time spent building the representation so far (sampling transitions, growing
+  /// roadmaps, planning moves) [s].
+  double constructionSeconds() const { return construction_seconds_; }
+
+  /// The lowest duration of any transition sampled so far for a task-space hyperarc, or
+  /// std::nullopt when none is.
+  std::optional<Millis> bestDuration(int hyperarc) const;
+
+ private:
+  int addVertex(const MotionVertex& vertex);
+  int robotVertex(int robot, const core::ArmConfig& q);
+  int holdingVertex(int robot, int object, int grasp, const core::ArmConfig& q);
+  int siteVertex(int site);
+  int graspId(int object, const Grasp& grasp);
+  void addTransition(TransitionSample sample);
+  void sampleHandoffs(int hyperarc, int grasp, int round);
+  Roadmap& roadmap(int robot, int object, int grasp);
+
+  const core::LoadedWorld* world_;
+  const TaskSpaceHypergraph* task_space_;
+  std::uint64_t seed_;
+  RepresentationSettings settings_;
+  std::unique_ptr<CollisionScene> scene_;
+  ObjectSites sites_;
+  std::unique_ptr<TransitionSampler> sampler_;
+  TimingLimits timing_;
+  int round_ = 1;
+  double construction_seconds_ = 0.0;
+
+  std::vector<MotionVertex> vertices_;
+  std::map<std::tuple<int, int, int, core::ArmConfig>, int> vertex_ids_;  // (task vertex, grasp, site, q)
+  std::vector<std::vector<Grasp>> grasps_;                                // [object]
+  std::deque<MotionTransition> transitions_;  // a deque: references stay valid as it grows
+  std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
+  std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
+  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
+  std::vector<int> source_, target_;
+};
+
+}  // namespace dashbed::planner

@@ -1,0 +1,421 @@
+#include "planner/scheduled_cbs.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <iostream>
+#include <cmath>
+#include <limits>
+#include <queue>
+#include <sstream>
+#include <tuple>
+
+namespace dashbed::planner {
+namespace {
+
+constexpr double kFingersOpen = 0.025;   // [m] a robot alone keeps its gripper open
+constexpr Millis kGridStep = 20;         // [ms] extra check times between key times
+constexpr double kStepHeadroom = 1.5;    // speed variation within a grid interval
+constexpr double kFarApart = 2.6;        // [m] bases farther apart than twice the reach + tool: never touch
+
+/// A precedence S[to] >= S[from] + lag.
+struct Edge {
+  int from = -1, to = -1;
+  Millis lag = 0;
+  bool operator==(const Edge&) const = default;
+};
+
+/// Local times of the points of a segment (path waypoints or transition keys) [ms].
+std::vector<Millis> pointTimes(const ScheduleSegment& seg, const TimingLimits& limits) {
+  std::vector<Millis> times;
+  if (seg.motion != nullptr) {
+    for (const TransitionMotion::Key& key : seg.motion->keys) times.push_back(key.t);
+    return times;
+  }
+  times.push_back(0);
+  for (std::size_t i = 1; i < seg.move->path.size(); ++i) {
+    times.push_back(times.back() + restToRestDuration(seg.move->path[i - 1], seg.move->path[i], limits));
+  }
+  return times;
+}
+
+/// The robot's timeline in a schedule: its segments (global indices) and their point times.
+struct Timeline {
+  std::vector<int> segments;
+  std::vector<std::vector<Millis>> times;
+};
+
+/// Where a robot is at time t: arm configuration, finger position, held object, and the item
+/// (segment index into Timeline::segments, or -1 - k when standing still before segment k).
+struct RobotState {
+  core::ArmConfig q{};
+  double finger = kFingersOpen;
+  std::optional<HeldObject> held;
+  int item = 0;
+};
+
+class ScheduleView {
+ public:
+  ScheduleView(const MotionHypergraph& graph, const Schedule& schedule) : graph_(&graph), schedule_(&schedule) {
+    timelines_.resize(graph.world().world->robots.size());
+    starts_.resize(timelines_.size());
+    for (std::size_t s = 0; s < schedule.segments.size(); ++s) {
+      const int robot = schedule.segments[s].robot;
+      timelines_[robot].segments.push_back(static_cast<int>(s));
+      timelines_[robot].times.push_back(pointTimes(schedule.segments[s], graph.timing()));
+      starts_[robot].push_back(toSeconds(schedule.start[s]));
+    }
+  }
+
+  const Timeline& timeline(int robot) const { return timelines_[robot]; }
+
+  /// The state of `robot` at time t [s]. At an instant where two pieces meet, `after` picks the
+  /// later one's fingers and held object.
+  RobotState at(int robot, double t, bool after) const {
+    const Timeline& line = timelines_[robot];
+    const std::vector<double>& starts = starts_[robot];
+    // k: segments started by t (at t itself only when `after`)
+    const std::size_t k = static_cast<std::size_t>(
+        (after ? std::upper_bound(starts.begin(), starts.end(), t) : std::lower_bound(starts.begin(), starts.end(), t)) -
+        starts.begin());
+    RobotState state;
+    state.item = -1 - static_cast<int>(k);
+    if (k == 0) {
+      state.q = graph_->world().world->robots[robot].home;
+      return state;
+    }
+    const ScheduleSegment& seg = schedule_->segments[line.segments[k - 1]];
+    const double end = starts[k - 1] + toSeconds(seg.duration);
+    if (t < end || (t == end && !after)) {
+      evaluate(seg, line.times[k - 1], t - starts[k - 1], after, state);
+      state.item = static_cast<int>(k - 1);
+    } else {
+      evaluate(seg, line.times[k - 1], toSeconds(seg.duration), false, state);  // standing at its end
+    }
+    return state;
+  }
+
+  Eigen::VectorXd full(const RobotState& state) const {
+    Eigen::VectorXd q(8);
+    for (int j = 0; j < 6; ++j) q[j] = state.q[j];
+    q[6] = q[7] = state.finger;
+    return q;
+  }
+
+ private:
+  void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
+                RobotState& state) const {
+    // the piece i with times[i] <= tau < times[i + 1] (or <= with !after)
+    const double tau_ms = tau * 1000.0;
+    const auto next = after ? std::upper_bound(times.begin() + 1, times.end(), tau_ms,
+                                               [](double v, Millis x) { return v < static_cast<double>(x); })
+                            : std::lower_bound(times.begin() + 1, times.end(), tau_ms,
+                                               [](Millis x, double v) { return static_cast<double>(x) < v; });
+    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(next - times.begin()) - 1,
+                                                times.size() >= 2 ? times.size() - 2 : 0);
+    if (seg.motion != nullptr) {
+      const TransitionMotion& m = *seg.motion;
+      if (times.size() == 1) {
+        state.q = m.keys[0].q;
+        return;
+      }
+      const double t0 = toSeconds(times[i]), t1 = toSeconds(times[i + 1]);
+      const double s = std::clamp((tau - t0) / (t1 - t0), 0.0, 1.0);
+      for (int j = 0; j < 6; ++j) state.q[j] = m.keys[i].q[j] + s * (m.keys[i + 1].q[j] - m.keys[i].q[j]);
+      state.finger = m.finger[i];
+      state.held = m.held[i];
+      return;
+    }
+    const std::vector<core::ArmConfig>& path = seg.move->path;
+    state.finger = seg.finger;
+    state.held = seg.held;
+    if (path.size() == 1) {
+      state.q = path[0];
+      return;
+    }
+    state.q = restToRestAt(path[i], path[i + 1], times[i + 1] - times[i], tau - toSeconds(times[i]), graph_->timing()).first;
+  }
+
+  const MotionHypergraph* graph_;
+  const Schedule* schedule_;
+  std::vector<Timeline> timelines_;
+  std::vector<std::vector<double>> starts_;  // [robot][k] start of its segment k [s]
+};
+
+/// The earliest schedule satisfying `edges`, or std::nullopt for a positive cycle.
+std::optional<std::vector<Millis>> earliestStarts(std::size_t count, const std::vector<Edge>& edges) {
+  std::vector<Millis> start(count, 0);
+  for (std::size_t round = 0; round <= count; ++round) {
+    bool changed = false;
+    for (const Edge& e : edges) {
+      if (start[e.from] + e.lag > start[e.to]) {
+        start[e.to] = start[e.from] + e.lag;
+        changed = true;
+      }
+    }
+    if (!changed) return start;
+  }
+  return std::nullopt;
+}
+
+Millis makespanOf(const Schedule& schedule) {
+  Millis end = 0;
+  for (std::size_t s = 0; s < schedule.segments.size(); ++s) end = std::max(end, schedule.start[s] + schedule.segments[s].duration);
+  return end;
+}
+
+/// Segments of a history: per robot in order, the robots one after another.
+std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const TransitionHistory& history) {
+  const auto move_segment = [&](int robot, const Move* move, int step) {
+    ScheduleSegment seg;
+    seg.robot = robot;
+    seg.move = move;
+    seg.step = step;
+    seg.duration = move->duration;
+    if (move->object >= 0) {
+      const Grasp& grasp = graph.graspsOf(move->object).at(move->grasp);
+      seg.held = HeldObject{move->object, grasp.X_OT.inverse(), true};
+      seg.finger = grasp.finger;
+    }
+    return seg;
+  };
+  std::vector<ScheduleSegment> segments;
+  for (std::size_t r = 0; r < history.robots.size(); ++r) {
+    const int robot = static_cast<int>(r);
+    for (std::size_t i = 0; i < history.steps.size(); ++i) {
+      const ScheduledTransition& step = history.steps[i];
+      const TransitionSample& sample = graph.transition(step.transition).sample;
+      for (std::size_t m = 0; m < sample.motions.size(); ++m) {
+        if (sample.motions[m].robot != robot) continue;
+        if (step.moves[m]->duration > 0) segments.push_back(move_segment(robot, step.moves[m], static_cast<int>(i)));
+        ScheduleSegment seg;
+        seg.robot = robot;
+        seg.motion = &sample.motions[m];
+        seg.step = static_cast<int>(i);
+        seg.duration = sample.duration;
+        segments.push_back(seg);
+      }
+    }
+    if (history.home_moves[r] != nullptr && history.home_moves[r]->duration > 0) {
+      segments.push_back(move_segment(robot, history.home_moves[r], -1));
+    }
+  }
+  return segments;
+}
+
+/// The temporal network of a history's segments (see the header).
+std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const TransitionHistory& history,
+                                  const std::vector<ScheduleSegment>& segments) {
+  std::vector<Edge> edges;
+  const int n = static_cast<int>(segments.size());
+  // each object's pick and place segment (the transition parts)
+  std::vector<int> pick_of(history.objects.size(), -1), place_of(history.objects.size(), -1);
+  std::vector<std::vector<int>> step_parts(history.steps.size());
+  for (int s = 0; s < n; ++s) {
+    if (s + 1 < n && segments[s + 1].robot == segments[s].robot) edges.push_back({s, s + 1, segments[s].duration});
+    if (segments[s].motion == nullptr) continue;
+    const TransitionSample& sample = graph.transition(history.steps[segments[s].step].transition).sample;
+    step_parts[segments[s].step].push_back(s);
+    if (sample.kind == TransitionKind::kPick) pick_of[sample.object] = s;
+    if (sample.kind == TransitionKind::kPlace) place_of[sample.object] = s;
+  }
+  for (const std::vector<int>& parts : step_parts) {  // a handoff's robots start together
+    for (std::size_t k = 1; k < parts.size(); ++k) {
+      edges.push_back({parts[0], parts[k], 0});
+      edges.push_back({parts[k], parts[0], 0});
+    }
+  }
+  for (int s = 0; s < n; ++s) {
+    const ScheduleSegment& seg = segments[s];
+    const SiteSet& touches =
+        seg.move != nullptr ? seg.move->touches : graph.transition(history.steps[seg.step].transition).sample.touches;
+    for (int b = 0; b < static_cast<int>(history.objects.size()); ++b) {
+      if (touches.test(ObjectSites::startSite(b)) && pick_of[b] >= 0 && pick_of[b] != s) {
+        edges.push_back({pick_of[b], s, segments[pick_of[b]].duration});
+      }
+      if (touches.test(ObjectSites::goalSite(b)) && place_of[b] >= 0 && place_of[b] != s) {
+        edges.push_back({s, place_of[b], seg.duration});
+      }
+    }
+  }
+  return edges;
+}
+
+/// The precedence "item a of robot ra ends before item b of robot rb starts", or std::nullopt
+/// when impossible (an item standing still forever, or from time 0).
+std::optional<Edge> precedence(const ScheduleView& view, const std::vector<ScheduleSegment>& segments, int ra,
+                               int item_a, int rb, int item_b) {
+  const Timeline& a = view.timeline(ra);
+  const Timeline& b = view.timeline(rb);
+  Edge edge;
+  // end(A) = S[from] + lag_a
+  Millis lag = 0;
+  if (item_a >= 0) {
+    edge.from = a.segments[item_a];
+    lag = segments[edge.from].duration;
+  } else {
+    const int k = -1 - item_a;  // standing still until segment k starts
+    if (k >= static_cast<int>(a.segments.size())) return std::nullopt;
+    edge.from = a.segments[k];
+  }
+  // start(B) = S[to] (+ duration of the segment before a standstill)
+  if (item_b >= 0) {
+    edge.to = b.segments[item_b];
+  } else {
+    const int k = -1 - item_b;  // standing still after segment k - 1
+    if (k == 0) return std::nullopt;
+    edge.to = b.segments[k - 1];
+    lag -= segments[edge.to].duration;
+  }
+  edge.lag = lag;
+  return edge;
+}
+
+std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
+  std::ostringstream out;
+  out << graph.world().world->robots[c.robot_a].name << " and " << graph.world().world->robots[c.robot_b].name
+      << " collide at t = " << c.t << " s";
+  return out.str();
+}
+
+}  // namespace
+
+std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule) {
+  const ScheduleView view(graph, schedule);
+  const CollisionScene& scene = graph.scene();
+  CollisionChecker checker(scene);
+  const std::size_t robots = graph.world().world->robots.size();
+  std::optional<RobotConflict> first;
+  for (std::size_t ra = 0; ra < robots; ++ra) {
+    for (std::size_t rb = ra + 1; rb < robots; ++rb) {
+      const int a = static_cast<int>(ra), b = static_cast<int>(rb);
+      const auto& spec_a = graph.world().world->robots[ra];
+      const auto& spec_b = graph.world().world->robots[rb];
+      if ((spec_a.X_WBase.translation() - spec_b.X_WBase.translation()).norm() > kFarApart) continue;
+      // check times: every point time of both robots and a regular grid
+      std::vector<Millis> grid;
+      for (const int r : {a, b}) {
+        const Timeline& line = view.timeline(r);
+        for (std::size_t k = 0; k < line.segments.size(); ++k) {
+          for (const Millis t : line.times[k]) grid.push_back(schedule.start[line.segments[k]] + t);
+        }
+      }
+      for (Millis t = 0; t <= schedule.makespan; t += kGridStep) grid.push_back(t);
+      grid.push_back(schedule.makespan);
+      std::sort(grid.begin(), grid.end());
+      grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+      for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
+        const double t0 = toSeconds(grid[i]), t1 = toSeconds(grid[i + 1]);
+        if (first && t0 > first->t) break;
+        const RobotState a0 = view.at(a, t0, true), b0 = view.at(b, t0, true);
+        // a handoff's two robots were checked against each other when it was sampled
+        const auto in_step = [&](int r, const RobotState& s) {
+          const Timeline& line = view.timeline(r);
+          return s.item >= 0 && schedule.segments[line.segments[s.item]].motion != nullptr
+                     ? schedule.segments[line.segments[s.item]].step
+                     : -2;
+        };
+        if (in_step(a, a0) >= 0 && in_step(a, a0) == in_step(b, b0)) continue;
+        const RobotState a1 = view.at(a, t1, false), b1 = view.at(b, t1, false);
+        const int steps = static_cast<int>(std::ceil(
+            kStepHeadroom * std::max(scene.motionSteps(a, view.full(a0), view.full(a1), a0.held),
+                                     scene.motionSteps(b, view.full(b0), view.full(b1), b0.held))));
+        for (int k = 0; k <= steps; ++k) {
+          const double t = t0 + (t1 - t0) * k / steps;
+          const RobotState sa = k == 0 ? a0 : k == steps ? a1 : view.at(a, t, true);
+          const RobotState sb = k == 0 ? b0 : k == steps ? b1 : view.at(b, t, true);
+          // the interval's own fingers and held objects, also at its end
+          if (!checker.robotsFree(a, view.full({sa.q, a0.finger, a0.held, 0}), a0.held, b,
+                                  view.full({sb.q, b0.finger, b0.held, 0}), b0.held)) {
+            if (!first || t < first->t) first = RobotConflict{t, a, b, a0.item, b0.item};
+            break;
+          }
+        }
+        if (first && first->robot_a == a && first->robot_b == b) break;
+      }
+    }
+  }
+  return first;
+}
+
+RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {
+  const ScheduleView view(graph, schedule);
+  const RobotState state = view.at(robot, t, true);
+  return {view.full(state), state.held};
+}
+
+ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
+                                const ConflictResolutionBudget& budget) {
+  ConflictResult result;
+  Schedule base;
+  base.segments = segmentsOf(graph, history);
+  const std::vector<Edge> base_edges = baseConstraints(graph, history, base.segments);
+
+  struct Node {
+    std::vector<Edge> extra;
+    std::vector<Millis> start;
+    Millis makespan = 0;
+    std::uint64_t order = 0;
+  };
+  const auto worse = [](const Node& x, const Node& y) {
+    return std::make_tuple(x.makespan, x.extra.size(), x.order) > std::make_tuple(y.makespan, y.extra.size(), y.order);
+  };
+  std::priority_queue<Node, std::vector<Node>, decltype(worse)> open(worse);
+  std::uint64_t created = 0;
+  const auto make = [&](std::vector<Edge> extra) -> std::optional<Node> {
+    std::vector<Edge> edges = base_edges;
+    edges.insert(edges.end(), extra.begin(), extra.end());
+    std::optional<std::vector<Millis>> start = earliestStarts(base.segments.size(), edges);
+    if (!start) return std::nullopt;
+    Schedule s = base;
+    s.start = *start;
+    return Node{std::move(extra), std::move(*start), makespanOf(s), created++};
+  };
+  if (std::optional<Node> root = make({})) {
+    open.push(std::move(*root));
+  } else {
+    result.reason = "the schedule's own precedences contradict each other";
+    return result;
+  }
+  while (!open.empty()) {
+    if (result.nodes >= budget.max_nodes || (budget.stop && budget.stop())) {
+      result.status = ConflictStatus::kBudget;
+      return result;
+    }
+    Node node = open.top();
+    open.pop();
+    ++result.nodes;
+    Schedule schedule = base;
+    schedule.start = node.start;
+    schedule.makespan = node.makespan;
+    const std::optional<RobotConflict> conflict = firstConflict(graph, schedule);
+    if (!conflict) {
+      result.status = ConflictStatus::kResolved;
+      result.constraints = static_cast<int>(node.extra.size());
+      result.schedule = std::move(schedule);
+      return result;
+    }
+    result.reason = describe(graph, *conflict);
+    if (std::getenv("DASH_DEBUG")) {
+      const auto item = [&](int r, int it) {
+        const ScheduleView dv(graph, schedule); const auto segs = dv.timeline(r).segments;
+        if (it >= 0) { const auto& sg = schedule.segments[segs[it]]; return std::string(sg.move ? "move" : "trans") + " step " + std::to_string(sg.step) + " [" + std::to_string(schedule.start[segs[it]]) + "+" + std::to_string(sg.duration) + "]"; }
+        return std::string("stay before ") + std::to_string(-1 - it) + "/" + std::to_string(segs.size());
+      };
+      std::cerr << "node " << result.nodes << " extra " << node.extra.size() << " makespan " << node.makespan << ": " << result.reason << " r" << conflict->robot_a << " " << item(conflict->robot_a, conflict->item_a) << " vs r" << conflict->robot_b << " " << item(conflict->robot_b, conflict->item_b) << "\n";
+    }
+    const ScheduleView view(graph, schedule);
+    for (const bool a_first : {true, false}) {
+      const std::optional<Edge> edge =
+          a_first ? precedence(view, schedule.segments, conflict->robot_a, conflict->item_a, conflict->robot_b, conflict->item_b)
+                  : precedence(view, schedule.segments, conflict->robot_b, conflict->item_b, conflict->robot_a, conflict->item_a);
+      if (!edge || std::find(node.extra.begin(), node.extra.end(), *edge) != node.extra.end()) continue;
+      std::vector<Edge> extra = node.extra;
+      extra.push_back(*edge);
+      if (std::optional<Node> child = make(std::move(extra))) open.push(std::move(*child));
+    }
+  }
+  result.status = ConflictStatus::kUnresolvable;
+  return result;
+}
+
+}  // namespace dashbed::planner

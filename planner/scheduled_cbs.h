@@ -1,0 +1,94 @@
+#pragma once
+// Conflict resolution (paper: Method > Conflict Resolution; Method Variants > Conflict
+// Resolution): a scheduled variant of conflict-based search that turns the optimistic schedule
+// of a transition history into one where no two robots collide.
+//
+// Each robot's part of the history becomes a sequence of segments (a move along its roadmap
+// path, then its part of a transition, ...; finally the move home), with the robot standing
+// still between segments. Segment start times S are the unknowns of a simple temporal network:
+//  - a robot's segments run in order (S_next >= S + duration);
+//  - both robots of a handoff start its transition together;
+//  - scheduling constraints from the object sites: a motion through an object's start site
+//    starts after that object's pick is over; a motion through its goal site ends before its
+//    place begins;
+//  - the constraints added by the high level.
+// The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
+// constraints cannot all hold).
+//
+// High level: best-first over constraint sets by makespan (ties: fewer constraints, then
+// creation order). A node's schedule is checked robot against robot, continuously in time:
+// both robots' exact configurations at a grid of times fine enough that no point of either
+// robot (held object included) moves more than the collision scene's motion_step between two
+// checks, so the margin covers the motion in between (times of every segment and key, plus a
+// 20 ms grid, each interval split by CollisionScene::motionSteps with 1.5x headroom for the
+// speed varying within it). At the earliest conflict, between item A of robot a and item B of
+// robot b (an item is a segment, or the robot standing still between two segments), the node
+// branches into "A ends before B starts" and "B ends before A starts" — each a precedence
+// (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. Robot
+// paths are not changed, only their timing: the low level is the schedule itself.
+
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "planner/motion_hypergraph.h"
+#include "planner/transition_history.h"
+
+namespace dashbed::planner {
+
+/// One segment of a robot's timeline.
+struct ScheduleSegment {
+  int robot = -1;
+  const Move* move = nullptr;                  ///< a move, or
+  const TransitionMotion* motion = nullptr;    ///< a robot's part of a transition
+  int step = -1;      ///< the history step it belongs to (-1: the move home)
+  Millis duration = 0;
+  std::optional<HeldObject> held;  ///< moves: the object carried
+  double finger = 0.025;           ///< moves: finger position [m]
+};
+
+struct Schedule {
+  std::vector<ScheduleSegment> segments;  ///< per robot in order, robots one after another
+  std::vector<Millis> start;              ///< [segment] start time
+  Millis makespan = 0;
+};
+
+struct ConflictResolutionBudget {
+  int max_nodes = 2000;       ///< high-level nodes expanded
+  std::function<bool()> stop;  ///< true when time is up (may be empty)
+};
+
+enum class ConflictStatus { kResolved, kUnresolvable, kBudget };
+
+struct ConflictResult {
+  ConflictStatus status = ConflictStatus::kUnresolvable;
+  std::optional<Schedule> schedule;
+  int nodes = 0;            ///< high-level nodes expanded
+  int constraints = 0;      ///< precedences in the solution
+  std::string reason;       ///< for kUnresolvable / kBudget: the last conflict found
+};
+
+/// Resolves the robot-robot conflicts of a complete history (with its moves home).
+ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
+                                const ConflictResolutionBudget& budget);
+
+/// A robot's full configuration (arm, fingers) and held object at time t of a schedule.
+struct RobotSnapshot {
+  Eigen::VectorXd q;
+  std::optional<HeldObject> held;
+};
+RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t);
+
+/// Checks a schedule robot against robot at the resolution described above; returns the first
+/// colliding time [s] and robots, or std::nullopt when none collide. Independent of the
+/// search: tests and the plan writer use it to confirm a result.
+struct RobotConflict {
+  double t = 0.0;
+  int robot_a = -1, robot_b = -1;
+  int item_a = -1, item_b = -1;  ///< segment index, or -1 - k for standing still before segment k
+};
+std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule);
+
+}  // namespace dashbed::planner

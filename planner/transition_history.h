@@ -1,0 +1,62 @@
+#pragma once
+// A transition history (paper: Method > Transition-extended Hypergraph): the transitions and
+// moves taken from the virtual source, with the time each is expected to occur and the last
+// known configuration of every moveable body. A history is valid when each body takes at most
+// one outgoing hyperarc at a time, which holds by construction here: a transition is appended
+// only when every robot and object of its tail is at the matching motion vertex.
+//
+// The times are an optimistic schedule: every move and transition starts as soon as the
+// bodies of its tail are there (the tail weight is the latest of them, "waiting for the
+// slowest"); robots may still collide with each other, which conflict resolution resolves.
+
+#include <optional>
+#include <vector>
+
+#include "planner/motion_hypergraph.h"
+
+namespace dashbed::planner {
+
+enum class ObjectPlace { kStart, kHeld, kGoal };
+
+/// One transition hyperarc of a history and the move hyperarcs leading each of its robots to
+/// the transition's start.
+struct ScheduledTransition {
+  int transition = -1;              ///< MotionTransition id
+  std::vector<const Move*> moves;   ///< per motion of the sample (same order)
+  std::vector<Millis> move_starts;  ///< when each move starts
+  Millis start = 0;                 ///< when the transition starts (every robot in place)
+};
+
+struct TransitionHistory {
+  struct RobotState {
+    core::ArmConfig q{};
+    Millis free = 0;  ///< the robot is done with its last hyperarc
+    int object = -1;  ///< held object, or -1
+    int grasp = -1;
+  };
+  struct ObjectState {
+    ObjectPlace place = ObjectPlace::kStart;
+    int holder = -1;
+    Millis since = 0;  ///< the object reached its current place
+  };
+
+  std::vector<RobotState> robots;
+  std::vector<ObjectState> objects;
+  std::vector<Millis> site_busy;  ///< [site] the last scheduled motion through the site ends
+  std::vector<ScheduledTransition> steps;
+  /// Final move of each robot back home (nullptr: already there); set when complete.
+  std::vector<const Move*> home_moves;
+  std::vector<Millis> home_starts;
+
+  /// The virtual source: robots alone at home, objects at their starts.
+  static TransitionHistory source(const MotionHypergraph& graph);
+
+  /// Sites occupied now: objects at their start or goal.
+  SiteSet occupied(int sites) const;
+  /// Every object with a goal is at it.
+  bool complete(const ObjectSites& sites) const;
+  /// Latest time any robot is busy (including the home moves once set).
+  Millis makespan() const;
+};
+
+}  // namespace dashbed::planner

@@ -1,0 +1,186 @@
+// The DaSH planner end to end, with iteration caps (no wall-clock budgets): plans solve, are
+// valid, are collision-free along the written timing (checked independently of the planner's
+// own checks), are deterministic, and infeasible worlds say why.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <set>
+#include <string>
+
+#include "controllers/trajectory_interpolator.h"
+#include "core/plan.h"
+#include "core/world_io.h"
+#include "core/world_loader.h"
+#include "planner/collision_checker.h"
+#include "planner/dash_planner.h"
+
+using namespace dashbed;
+using namespace dashbed::planner;
+using Catch::Matchers::Contains;
+
+namespace {
+
+std::string worldPath(const std::string& name) { return std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + name; }
+
+/// A world loaded without the reachability check, so that the planner has to find out.
+core::LoadedWorld unchecked(core::World world) {
+  core::LoadedWorld loaded;
+  loaded.world = std::make_unique<const core::World>(std::move(world));
+  loaded.robots = std::make_unique<const core::RobotSet>(*loaded.world);
+  loaded.reach = core::computeReach(*loaded.world, *loaded.robots);
+  return loaded;
+}
+
+PlannerSettings testSettings(Method method = Method::kGreedy) {
+  PlannerSettings settings;
+  settings.method = method;
+  settings.seed = 7;
+  settings.max_rounds = 8;
+  settings.search_expansions = 5000;
+  settings.conflict_nodes = 300;
+  return settings;
+}
+
+/// Every object's actions form a chain: picked at its start by one robot, handed along, placed
+/// in its goal region by the robot holding it; no robot ever holds two objects.
+void requireValidActions(const core::Plan& plan, const core::World& world) {
+  std::map<std::string, std::string> holder;     // object -> robot holding it
+  std::map<std::string, std::string> holding;    // robot -> object
+  std::set<std::string> placed;
+  std::vector<core::PlanAction> actions = plan.actions;
+  std::stable_sort(actions.begin(), actions.end(), [](const auto& a, const auto& b) { return a.end < b.end; });
+  for (const core::PlanAction& a : actions) {
+    INFO(core::toString(a.type) << " " << a.robot << " " << a.object);
+    switch (a.type) {
+      case core::ActionType::kPick:
+        REQUIRE(holder.count(a.object) == 0);
+        REQUIRE(placed.count(a.object) == 0);
+        REQUIRE(holding.count(a.robot) == 0);
+        holder[a.object] = a.robot;
+        holding[a.robot] = a.object;
+        break;
+      case core::ActionType::kHandoff:
+        REQUIRE(holder.at(a.object) == a.robot);
+        REQUIRE(holding.count(a.receiver) == 0);
+        holding.erase(a.robot);
+        holder[a.object] = a.receiver;
+        holding[a.receiver] = a.object;
+        break;
+      case core::ActionType::kPlace:
+        REQUIRE(holder.at(a.object) == a.robot);
+        REQUIRE(a.region == world.goalRegionOf(*world.findObject(a.object))->name);
+        holder.erase(a.object);
+        holding.erase(a.robot);
+        placed.insert(a.object);
+        break;
+    }
+  }
+  for (const core::ObjectSpec& object : world.objects) {
+    if (world.goalRegionOf(object) != nullptr) CHECK(placed.count(object.name) == 1);
+  }
+  CHECK(holding.empty());
+}
+
+/// No two robot bodies touch along the plan as the simulator interpolates it, every 2 ms,
+/// with a checker of zero margin (the planner's own checks use a margin and its timelines).
+/// Fingers follow the gripper commands: open, or closed on a cube (the worlds used here have
+/// cubes of one size).
+void requireNoRobotCollision(const core::Plan& plan, const core::LoadedWorld& loaded) {
+  const double cube = loaded.world->objects.front().size.x();
+  for (const core::ObjectSpec& object : loaded.world->objects) REQUIRE(object.size == Eigen::Vector3d::Constant(cube));
+  CollisionSettings exact;
+  exact.margin = 0.0;
+  exact.motion_step = 1e-3;
+  const CollisionScene scene(*loaded.world, *loaded.robots, exact);
+  CollisionChecker checker(scene);
+  std::vector<controllers::TrajectoryInterpolator> arms;
+  for (const core::RobotTrajectory& t : plan.trajectories) arms.emplace_back(t.points);
+  const int n = static_cast<int>(arms.size());
+  for (double t = 0.0; t <= plan.duration(); t += 0.002) {
+    std::vector<Eigen::VectorXd> q(n, Eigen::VectorXd::Constant(8, 0.0));
+    for (int r = 0; r < n; ++r) {
+      const auto ref = arms[r].at(t);
+      for (int j = 0; j < 6; ++j) q[r][j] = ref.q[j];
+      double finger = 0.025;
+      for (const core::GripperCommand& command : plan.gripper) {
+        if (command.robot == plan.trajectories[r].robot && command.t <= t) {
+          finger = command.action == core::GripperAction::kOpen ? 0.025 : cube / 2;
+        }
+      }
+      q[r][6] = q[r][7] = finger;
+    }
+    for (int a = 0; a < n; ++a) {
+      for (int b = a + 1; b < n; ++b) {
+        INFO("t = " << t << " s, robots " << a << " and " << b);
+        REQUIRE(checker.robotsFree(a, q[a], std::nullopt, b, q[b], std::nullopt));
+      }
+    }
+  }
+}
+
+}  // namespace
+
+TEST_CASE("greedy DaSH plans the default world into valid collision-free chains", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  const core::Plan& plan = *result.plan;
+  core::checkPlanStructure(plan, "plan");
+  requireValidActions(plan, *world.world);
+  // 4 cubes that all need a handoff (cross starts): 4 picks, 4 handoffs, 4 places
+  CHECK(plan.actions.size() == 12);
+  requireNoRobotCollision(plan, world);
+  CHECK(result.stats.makespan > 0.0);
+  CHECK(result.stats.makespan == Approx(plan.duration()).margin(1e-9));
+  CHECK(plan.statistics.at("status") == "solved");
+}
+
+TEST_CASE("the same seed gives a byte-identical plan", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const PlanResult a = solve(world, testSettings());
+  const PlanResult b = solve(world, testSettings());
+  REQUIRE(a.plan);
+  REQUIRE(b.plan);
+  CHECK(core::writePlanJson(*a.plan) == core::writePlanJson(*b.plan));
+}
+
+TEST_CASE("a cube no robot can reach makes the problem infeasible and is named", "[planner][dash]") {
+  core::World world = core::loadWorldFile(worldPath("default.yaml"));
+  world.objects[2].X_WO.translation() = Eigen::Vector3d(0.0, 2.5, 0.775);
+  const core::LoadedWorld loaded = unchecked(std::move(world));
+  const PlanResult result = solve(loaded, testSettings());
+  CHECK(result.status == PlannerStatus::kInfeasible);
+  CHECK_THAT(result.reason, Contains(loaded.world->objects[2].name));
+  CHECK_FALSE(result.plan);
+}
+
+TEST_CASE("shelving: the back slot is filled before the front slot in front of it", "[planner][dash][shelf]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("shelf_2r_4o.yaml"));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  std::map<std::string, double> placed_at;  // region -> end of its place
+  for (const core::PlanAction& a : result.plan->actions) {
+    if (a.type == core::ActionType::kPlace) placed_at[a.region] = a.end;
+  }
+  for (const auto& [region, end] : placed_at) {
+    const auto back = region.find("_front");
+    if (back == std::string::npos) continue;
+    const std::string back_region = region.substr(0, back) + "_back";
+    if (placed_at.count(back_region) != 0) CHECK(placed_at.at(back_region) < end);
+  }
+}
+
+TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const PlanResult greedy = solve(world, testSettings(Method::kGreedy));
+  PlannerSettings settings = testSettings(Method::kOptimal);
+  settings.search_expansions = 400;
+  settings.next_best_plans = 3;
+  const PlanResult optimal = solve(world, settings);
+  REQUIRE(greedy.status == PlannerStatus::kSolved);
+  REQUIRE(optimal.status == PlannerStatus::kSolved);
+  CHECK(optimal.stats.makespan <= greedy.stats.makespan);
+}

@@ -1,0 +1,184 @@
+// The planner benchmark's writers on a small made-up result set (the planner is not run here):
+// table columns and rows, CSV that reads back, the paper lookup, the row list of the options.
+
+#include <algorithm>
+#include <catch2/catch.hpp>
+#include <optional>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include "tools/bench_plan.h"
+
+namespace dashbed::tools {
+namespace {
+
+RunRecord solved(std::uint64_t seed, double planning, bool sim_passed) {
+  RunRecord r;
+  r.seed = seed;
+  r.construction_seconds = 0.5 * planning;
+  r.search_seconds = 0.25 * planning;
+  r.planning_seconds = planning;
+  r.planning_cpu_seconds = 0.5 * planning;
+  r.makespan = 40.0 + static_cast<double>(seed);
+  r.sim_passed = sim_passed;
+  if (!sim_passed) r.sim_failure = "place cube_1 by r0: tilt 0.3 rad > 0.1 rad";
+  return r;
+}
+
+RunRecord atBudget(RunRecord r) {
+  r.at_budget = true;
+  return r;
+}
+
+RunRecord failed(std::uint64_t seed, RunOutcome outcome, const std::string& reason) {
+  RunRecord r;
+  r.seed = seed;
+  r.outcome = outcome;
+  r.reason = reason;
+  r.planning_seconds = 30.0;
+  return r;
+}
+
+std::vector<BenchRow> fakeRows() {
+  return {
+      {{"sorting", 2, 4, "cross", "greedy"}, {solved(1, 0.2, true), solved(2, 0.6, false)}, ""},
+      {{"sorting", 2, 6, "random", "optimal"},
+       {failed(1, RunOutcome::kTimeout, "time budget, round 3"),
+        failed(2, RunOutcome::kTimeout, "time budget, round 2")},
+       ""},
+      {{"sorting", 2, 8, "random", "optimal"}, {}, "not run: no seed solved with 6 objects"},
+      {{"shelving", 2, 2, "", "optimal"},
+       {atBudget(solved(1, 30.5, true)), failed(2, RunOutcome::kInfeasible, "no grasp of \"b0\"")},
+       ""},
+  };
+}
+
+std::vector<std::string> lines(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);) out.push_back(line);
+  return out;
+}
+
+// cells of a Markdown table line "| a | b |"
+std::vector<std::string> cells(const std::string& line) {
+  std::vector<std::string> out;
+  std::size_t start = line.find('|') + 1;
+  for (std::size_t bar = line.find('|', start); bar != std::string::npos; bar = line.find('|', start)) {
+    std::string cell = line.substr(start, bar - start);
+    cell.erase(0, cell.find_first_not_of(' '));
+    cell.erase(cell.find_last_not_of(' ') + 1);
+    out.push_back(cell);
+    start = bar + 1;
+  }
+  return out;
+}
+
+// RFC 4180 fields of one CSV line
+std::vector<std::string> csvFields(const std::string& line) {
+  std::vector<std::string> out(1);
+  bool quoted = false;
+  for (std::size_t i = 0; i < line.size(); ++i) {
+    const char c = line[i];
+    if (quoted && c == '"' && i + 1 < line.size() && line[i + 1] == '"') {
+      out.back() += '"';
+      ++i;
+    } else if (c == '"') {
+      quoted = !quoted;
+    } else if (c == ',' && !quoted) {
+      out.emplace_back();
+    } else {
+      out.back() += c;
+    }
+  }
+  return out;
+}
+
+TEST_CASE("bench plan Markdown table has the paper's columns and one line per row", "[bench_plan]") {
+  const std::vector<std::string> table = lines(markdownTable(fakeRows()));
+  REQUIRE(table.size() == 2 + 4);
+  const std::vector<std::string> header = cells(table[0]);
+  CHECK(header == std::vector<std::string>{"Robots", "Objects", "Scenario", "Method", "Construction [s]", "Search [s]",
+                                           "Planning [s]", "Planning CPU [s]", "Makespan [s]", "Success", "Sim pass",
+                                           "Paper constr. + search [s]", "Speed-up"});
+  for (std::size_t i = 1; i < table.size(); ++i) CHECK(cells(table[i]).size() == header.size());
+
+  const std::vector<std::string> greedy = cells(table[2]);
+  CHECK(greedy[2] == "Cross");
+  CHECK(greedy[3] == "Greedy");
+  CHECK(greedy[4] == "0.2 / 0.3");      // construction mean / max
+  CHECK(greedy[6] == "0.4 / 0.6");      // planning, wall clock
+  CHECK(greedy[7] == "0.2 / 0.3");      // planning, CPU
+  CHECK(greedy[8] == "41.50 / 42.00");  // makespan
+  CHECK(greedy[9] == "1.00");
+  CHECK(greedy[10] == "0.50 (1/2)");
+  CHECK(greedy[11] == "23.55");  // paper: 23.32 + 0.23
+  CHECK(greedy[12] == "59x");    // 23.55 / 0.4
+
+  const std::vector<std::string> timeout = cells(table[3]);
+  CHECK(timeout[3] == "MM-DaSH");
+  CHECK(timeout[4] == "timeout");
+  CHECK(timeout[9] == "0.00");
+  CHECK(timeout[12] == "-");
+  CHECK(cells(table[4])[4] == "not run");
+  CHECK(cells(table[5])[2] == "Shelving");
+  CHECK(cells(table[5])[9] == "0.50 (1 at budget)");
+}
+
+TEST_CASE("bench plan CSV files read back with one line per row and per run", "[bench_plan]") {
+  const std::vector<BenchRow> rows = fakeRows();
+  const std::vector<std::string> summary = lines(summaryCsv(rows));
+  REQUIRE(summary.size() == 1 + rows.size());
+  const std::vector<std::string> columns = csvFields(summary[0]);
+  for (const std::string& line : summary) CHECK(csvFields(line).size() == columns.size());
+  const auto column = [&](const std::string& name) {
+    return static_cast<std::size_t>(std::find(columns.begin(), columns.end(), name) - columns.begin());
+  };
+  REQUIRE(column("not_run") < columns.size());
+  const std::vector<std::string> first = csvFields(summary[1]);
+  CHECK(first[column("method")] == "greedy");
+  CHECK(std::stod(first[column("success_rate")]) == 1.0);
+  CHECK(std::stod(first[column("planning_mean_s")]) == Approx(0.4));
+  CHECK(std::stod(first[column("paper_search_s")]) == Approx(0.23));
+  CHECK(first[column("sim_passed")] == "1");
+  CHECK(csvFields(summary[2])[column("planning_mean_s")].empty());
+  CHECK(csvFields(summary[3])[column("not_run")] == "not run: no seed solved with 6 objects");
+  CHECK(csvFields(summary[4])[column("at_budget")] == "1");
+
+  const std::vector<std::string> runs = lines(runsCsv(rows));
+  REQUIRE(runs.size() == 1 + 6);
+  const std::vector<std::string> run_columns = csvFields(runs[0]);
+  for (const std::string& line : runs) CHECK(csvFields(line).size() == run_columns.size());
+  CHECK(csvFields(runs[3])[6] == "timeout");
+  CHECK(csvFields(runs[3]).back() == "time budget, round 3");  // quoted: holds a comma
+  CHECK(csvFields(runs[6]).back() == "no grasp of \"b0\"");
+  CHECK(csvFields(runs[2]).back() == "place cube_1 by r0: tilt 0.3 rad > 0.1 rad");
+}
+
+TEST_CASE("bench plan rows follow the paper's order and its table", "[bench_plan]") {
+  BenchOptions options;
+  options.suites = {"sorting4", "shelf"};
+  const std::vector<BenchCase> cases = benchCases(options);
+  REQUIRE(cases.size() == 4 * 2 * 2 + 3 * 2);
+  CHECK(cases.front().robots == 4);
+  CHECK(cases.front().objects == 4);
+  CHECK(cases.front().start == "cross");
+  CHECK(cases.front().method == "optimal");
+  CHECK(cases.back().suite == "shelving");
+  CHECK(cases.back().objects == 6);
+
+  const std::optional<PaperRow> paper = paperRow({"sorting", 4, 16, "cross", "greedy"});
+  REQUIRE(paper);
+  CHECK(paper->construction == 3691.00);
+  CHECK(paper->search == 314.17);
+  CHECK_FALSE(paperRow({"sorting", 2, 8, "cross", "optimal"}));
+  CHECK_FALSE(paperRow({"shelving", 2, 2, "", "greedy"}));
+
+  options.methods = {"astar"};
+  CHECK_THROWS_AS(benchCases(options), std::invalid_argument);
+}
+
+}  // namespace
+}  // namespace dashbed::tools

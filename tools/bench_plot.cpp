@@ -1,0 +1,163 @@
+#include "tools/bench_plot.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdint>
+#include <iterator>
+#include <limits>
+
+#include "core/number_text.h"
+#include "sim/render/overlay.h"
+
+namespace dashbed::tools {
+namespace {
+
+constexpr int kLegendWidth = 360;
+constexpr int kLeft = 100;  // plot area margins [px]
+constexpr int kTop = 60;
+constexpr int kBottom = 70;
+constexpr int kTextScale = 2;
+constexpr int kTextHeight = 7 * kTextScale;
+constexpr int kDash = 8;  // dash and gap length [px]
+
+const core::Color kAxis{0.1, 0.1, 0.1};
+const core::Color kGrid{0.87, 0.87, 0.87};
+
+void setPixel(render::Image& image, int x, int y, const core::Color& c) {
+  if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
+  std::uint8_t* p = image.pixel(x, y);
+  p[0] = static_cast<std::uint8_t>(std::lround(255.0 * c.r));
+  p[1] = static_cast<std::uint8_t>(std::lround(255.0 * c.g));
+  p[2] = static_cast<std::uint8_t>(std::lround(255.0 * c.b));
+}
+
+// a line `width` pixels thick, stepped along its longer axis; dashed: every other kDash pixels
+void drawLine(render::Image& image, double x0, double y0, double x1, double y1, const core::Color& c, int width,
+              bool dashed = false) {
+  const int steps = static_cast<int>(std::ceil(std::max(std::abs(x1 - x0), std::abs(y1 - y0)))) + 1;
+  const int lo = -(width - 1) / 2, hi = width / 2;
+  for (int i = 0; i <= steps; ++i) {
+    if (dashed && (i / kDash) % 2 == 1) continue;
+    const double t = static_cast<double>(i) / steps;
+    const int x = static_cast<int>(std::lround(x0 + t * (x1 - x0)));
+    const int y = static_cast<int>(std::lround(y0 + t * (y1 - y0)));
+    for (int dy = lo; dy <= hi; ++dy) {
+      for (int dx = lo; dx <= hi; ++dx) setPixel(image, x + dx, y + dy, c);
+    }
+  }
+}
+
+void fillCircle(render::Image& image, double cx, double cy, double radius, const core::Color& c) {
+  const int r = static_cast<int>(std::ceil(radius));
+  for (int dy = -r; dy <= r; ++dy) {
+    for (int dx = -r; dx <= r; ++dx) {
+      if (dx * dx + dy * dy <= radius * radius) {
+        setPixel(image, static_cast<int>(std::lround(cx)) + dx, static_cast<int>(std::lround(cy)) + dy, c);
+      }
+    }
+  }
+}
+
+// a tick spacing of 1, 2 or 5 times a power of ten giving at most about `intervals` up to `max`
+double tickStep(double max, int intervals) {
+  const double rough = max / intervals;
+  const double power = std::pow(10.0, std::floor(std::log10(rough)));
+  for (const double factor : {1.0, 2.0, 5.0}) {
+    if (factor * power >= rough) return factor * power;
+  }
+  return 10.0 * power;
+}
+
+// 10^k without an exponent: "0.001", "1", "1000"
+std::string decadeText(int k) { return core::fixedText(std::pow(10.0, k), std::max(0, -k)); }
+
+bool drawn(const LinePlot& plot, const std::pair<double, double>& p) {
+  return std::isfinite(p.first) && std::isfinite(p.second) && (!plot.log_y || p.second > 0.0);
+}
+
+}  // namespace
+
+render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
+  render::Image image = render::Image::filled(width, height, 255, 255, 255);
+  const int x_lo = kLeft, x_hi = width - kLegendWidth, y_lo = height - kBottom, y_hi = kTop;  // pixel bounds
+
+  double x_max = 0.0, y_min = std::numeric_limits<double>::infinity(), y_max = 0.0;
+  for (const PlotSeries& s : plot.series) {
+    for (const auto& p : s.points) {
+      if (!drawn(plot, p)) continue;
+      x_max = std::max(x_max, p.first);
+      y_min = std::min(y_min, p.second);
+      y_max = std::max(y_max, p.second);
+    }
+  }
+  if (x_max <= 0.0) x_max = 1.0;
+  const double x_step = tickStep(x_max, 10);
+  x_max = x_step * std::ceil(x_max / x_step);
+  const auto px = [&](double x) { return x_lo + (x_hi - x_lo) * x / x_max; };
+
+  // y axis: value -> pixel, and the labelled ticks
+  std::vector<std::pair<double, std::string>> y_ticks;  // (axis coordinate, label)
+  double axis_lo = 0.0, axis_hi = 1.0;
+  if (plot.log_y) {
+    const int k_lo = std::isfinite(y_min) ? static_cast<int>(std::floor(std::log10(y_min))) : 0;
+    const int k_hi = std::max(k_lo + 1, y_max > 0.0 ? static_cast<int>(std::ceil(std::log10(y_max))) : 1);
+    axis_lo = k_lo;
+    axis_hi = k_hi;
+    for (int k = k_lo; k <= k_hi; ++k) y_ticks.emplace_back(k, decadeText(k));
+  } else {
+    const double step = tickStep(y_max > 0.0 ? y_max : 1.0, 6);
+    axis_hi = step * std::ceil((y_max > 0.0 ? y_max : 1.0) / step);
+    for (int k = 0; k * step <= axis_hi * (1 + 1e-9); ++k)
+      y_ticks.emplace_back(k * step, core::significantText(k * step, 6));
+  }
+  const auto py = [&](double y) {
+    const double a = plot.log_y ? std::log10(y) : y;
+    return y_lo + (y_hi - y_lo) * (a - axis_lo) / (axis_hi - axis_lo);
+  };
+
+  // grid, ticks, labels
+  for (int k = 0; k * x_step <= x_max * (1 + 1e-9); ++k) {
+    const int x = static_cast<int>(std::lround(px(k * x_step)));
+    drawLine(image, x, y_lo, x, y_hi, kGrid, 1);
+    const std::string label = core::significantText(k * x_step, 6);
+    render::drawText(image, x - render::textWidth(label, kTextScale) / 2, y_lo + 10, label, kAxis, kTextScale);
+  }
+  for (const auto& [a, label] : y_ticks) {
+    const int y = static_cast<int>(std::lround(y_lo + (y_hi - y_lo) * (a - axis_lo) / (axis_hi - axis_lo)));
+    drawLine(image, x_lo, y, x_hi, y, kGrid, 1);
+    render::drawText(image, x_lo - 10 - render::textWidth(label, kTextScale), y - kTextHeight / 2, label, kAxis,
+                     kTextScale);
+  }
+  drawLine(image, x_lo, y_lo, x_hi, y_lo, kAxis, 2);
+  drawLine(image, x_lo, y_lo, x_lo, y_hi, kAxis, 2);
+  render::drawText(image, (x_lo + x_hi - render::textWidth(plot.x_label, kTextScale)) / 2, y_lo + 40, plot.x_label,
+                   kAxis, kTextScale);
+  render::drawText(image, 10, y_hi - 28, plot.y_label, kAxis, kTextScale);
+  render::drawText(image, 10, 10, plot.title, kAxis, kTextScale);
+
+  // the series, then the legend
+  for (const PlotSeries& s : plot.series) {
+    std::vector<std::pair<double, double>> points;
+    std::copy_if(s.points.begin(), s.points.end(), std::back_inserter(points),
+                 [&](const auto& p) { return drawn(plot, p); });
+    std::sort(points.begin(), points.end());
+    for (std::size_t i = 1; i < points.size(); ++i) {
+      drawLine(image, px(points[i - 1].first), py(points[i - 1].second), px(points[i].first), py(points[i].second),
+               s.color, 2, s.dashed);
+    }
+    if (!s.dashed) {
+      for (const auto& [x, y] : points) fillCircle(image, px(x), py(y), 4.5, s.color);
+    }
+  }
+  const int legend_x = x_hi + 20;
+  for (std::size_t i = 0; i < plot.series.size(); ++i) {
+    const PlotSeries& s = plot.series[i];
+    const int y = y_hi + static_cast<int>(i) * (kTextHeight + 9) + kTextHeight / 2;
+    drawLine(image, legend_x, y, legend_x + 34, y, s.color, 2, s.dashed);
+    if (!s.dashed) fillCircle(image, legend_x + 17, y, 4.5, s.color);
+    render::drawText(image, legend_x + 44, y - kTextHeight / 2, s.label, kAxis, kTextScale);
+  }
+  return image;
+}
+
+}  // namespace dashbed::tools
