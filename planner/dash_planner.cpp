@@ -144,10 +144,15 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
     HyperpathSearch search(*graph);
-    const SearchResult greedy = search_timed([&] { return search.greedy(search_budget); });
-    if (greedy.status == SearchStatus::kFound) resolve(*greedy.plan);
-    if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
-    if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
+    // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at home
+    for (const bool park : {false, true}) {
+      HyperpathSearch query(*graph, park);
+      const SearchResult greedy = search_timed([&] { return query.greedy(search_budget); });
+      if (greedy.status == SearchStatus::kFound) resolve(*greedy.plan);
+      if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
+      if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
+      if (best_schedule || time_up()) break;
+    }
     if (settings.method == Method::kOptimal && !time_up()) {
       // Next-Best Search: task plans in order of optimistic makespan until no better is possible
       for (int k = 0; k < settings.next_best_plans && !time_up(); ++k) {

@@ -41,7 +41,10 @@ constexpr std::size_t kAStarSamplesPerHyperarc = 2;
 
 }  // namespace
 
-HyperpathSearch::HyperpathSearch(MotionHypergraph& graph) : graph_(&graph) { updateCostToGo(); }
+HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
+    : graph_(&graph), park_at_home_(park_at_home) {
+  updateCostToGo();
+}
 HyperpathSearch::~HyperpathSearch() = default;
 
 Millis HyperpathSearch::costToGo(int object, int task_vertex) const {
@@ -163,13 +166,22 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
   Millis start = history.objects[o].since;
   for (const TransitionMotion& motion : sample.motions) {
     const TransitionHistory::RobotState& r = history.robots[motion.robot];
-    const Move* move = graph_->move(motion.robot, r.object, r.grasp, r.q, motion.start(), occupied);
-    if (move == nullptr) return std::nullopt;
-    const Millis move_start = after_left(move->touches, r.free);
-    step.moves.push_back(move);
-    step.move_starts.push_back(move_start);
-    mark_busy(move->touches, move_start + move->duration);
-    start = std::max(start, move_start + move->duration);
+    // the way to the transition's start: direct, or home first to wait out of the way
+    const core::ArmConfig& home = graph_->world().world->robots[motion.robot].home;
+    std::vector<core::ArmConfig> stops{r.q, motion.start()};
+    if (park_at_home_ && r.object < 0 && r.q != home && motion.start() != home) stops = {r.q, home, motion.start()};
+    std::vector<const Move*> moves;
+    Millis t = r.free;
+    for (std::size_t k = 1; k < stops.size(); ++k) {
+      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied);
+      if (move == nullptr) return std::nullopt;
+      t = after_left(move->touches, t);
+      mark_busy(move->touches, t + move->duration);
+      t += move->duration;
+      moves.push_back(move);
+    }
+    step.moves.push_back(std::move(moves));
+    start = std::max(start, t);
   }
   if (sample.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[ObjectSites::goalSite(o)]);
   start = after_left(sample.touches, start);

@@ -62,8 +62,10 @@ struct SearchResult {
 class HyperpathSearch {
  public:
   /// `graph` is extended on demand (transitions sampled, moves planned) and must outlive the
-  /// search.
-  explicit HyperpathSearch(MotionHypergraph& graph);
+  /// search. With `park_at_home`, a robot without an object goes home between transitions, so
+  /// that it waits there rather than where it may block others (a fallback when conflict
+  /// resolution cannot order the robots of the direct schedule).
+  explicit HyperpathSearch(MotionHypergraph& graph, bool park_at_home = false);
   ~HyperpathSearch();
 
   SearchResult greedy(const SearchBudget& budget);
@@ -84,6 +86,7 @@ class HyperpathSearch {
   void updateCostToGo();
 
   MotionHypergraph* graph_;
+  bool park_at_home_;
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
   std::unique_ptr<AStarState> astar_;
 };

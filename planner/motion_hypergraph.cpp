@@ -45,6 +45,8 @@ void RepresentationSettings::validate() const {
   require(initial_roadmap_samples >= 0, "initial_roadmap_samples", "must be >= 0");
   require(roadmap_samples_per_round >= 0, "roadmap_samples_per_round", "must be >= 0");
   require(handoff_samples_per_round >= 1, "handoff_samples_per_round", "must be >= 1");
+  require(move_growth_attempts >= 0, "move_growth_attempts", "must be >= 0");
+  require(move_growth_samples >= 1, "move_growth_samples", "must be >= 1");
   require(velocity_fraction > 0.0 && velocity_fraction <= 1.0, "velocity_fraction", "must be in (0, 1]");
   require(max_acceleration > 0.0, "max_acceleration", "must be positive");
   collision.validate();
@@ -201,6 +203,13 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
   const int a = map.addConfiguration(from), b = map.addConfiguration(to);
   std::optional<std::vector<core::ArmConfig>> path;
   if (a >= 0 && b >= 0) path = a == b ? std::vector<core::ArmConfig>{from} : map.query(a, b, occupied);
+  // a roadmap that does not connect them yet grows a little on the spot
+  int& grown = grown_this_round_[std::make_tuple(robot, object, grasp)];
+  while (!path && a >= 0 && b >= 0 && grown < settings_.move_growth_attempts * settings_.move_growth_samples) {
+    map.grow(settings_.move_growth_samples);
+    grown += settings_.move_growth_samples;
+    path = map.query(a, b, occupied);
+  }
   if (path) {
     Move m;
     m.robot = robot;
@@ -236,6 +245,7 @@ int MotionHypergraph::expand() {
   }
   for (const auto& [hyperarc, grasp] : handoff_keys) sampleHandoffs(hyperarc, grasp, round_);
   for (auto& [key, map] : roadmaps_) map.grow(settings_.roadmap_samples_per_round);
+  grown_this_round_.clear();
   // cached failures may now succeed; found moves stay valid
   std::erase_if(moves_, [](const auto& entry) { return !entry.second.has_value(); });
   return round_;

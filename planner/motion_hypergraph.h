@@ -48,6 +48,10 @@ struct RepresentationSettings {
   int initial_roadmap_samples = 10;    ///< samples of a roadmap when it is created (paper: 10)
   int roadmap_samples_per_round = 10;  ///< added to every roadmap per round (paper: 10)
   int handoff_samples_per_round = 2;   ///< new samples per handoff hyperarc and giver grasp per round
+  /// When a move query finds no path, its roadmap grows by move_growth_samples and the query
+  /// is repeated; a roadmap grows so at most move_growth_attempts times per round.
+  int move_growth_attempts = 3;
+  int move_growth_samples = 30;
   double velocity_fraction = 0.6;      ///< move speed cap, fraction of each joint's velocity limit
   double max_acceleration = 4.0;       ///< move acceleration cap for every joint [rad/s^2]
   TransitionSettings transitions;
@@ -166,6 +170,7 @@ class MotionHypergraph {
   std::deque<MotionTransition> transitions_;  // a deque: references stay valid as it grows
   std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
+  std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
   std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
   std::vector<int> source_, target_;
 };

@@ -1,8 +1,6 @@
 #include "planner/scheduled_cbs.h"
 
 #include <algorithm>
-#include <cstdlib>
-#include <iostream>
 #include <cmath>
 #include <limits>
 #include <queue>
@@ -186,7 +184,9 @@ std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const Tra
       const TransitionSample& sample = graph.transition(step.transition).sample;
       for (std::size_t m = 0; m < sample.motions.size(); ++m) {
         if (sample.motions[m].robot != robot) continue;
-        if (step.moves[m]->duration > 0) segments.push_back(move_segment(robot, step.moves[m], static_cast<int>(i)));
+        for (const Move* move : step.moves[m]) {
+          if (move->duration > 0) segments.push_back(move_segment(robot, move, static_cast<int>(i)));
+        }
         ScheduleSegment seg;
         seg.robot = robot;
         seg.motion = &sample.motions[m];
@@ -211,7 +211,14 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
   std::vector<int> pick_of(history.objects.size(), -1), place_of(history.objects.size(), -1);
   std::vector<std::vector<int>> step_parts(history.steps.size());
   for (int s = 0; s < n; ++s) {
-    if (s + 1 < n && segments[s + 1].robot == segments[s].robot) edges.push_back({s, s + 1, segments[s].duration});
+    if (s + 1 < n && segments[s + 1].robot == segments[s].robot) {
+      edges.push_back({s, s + 1, segments[s].duration});
+      // a move into a transition arrives just in time: the robot waits where it was, not in
+      // front of the transition, where it could block the robot it is waiting for
+      if (segments[s].move != nullptr && segments[s + 1].motion != nullptr) {
+        edges.push_back({s + 1, s, -segments[s].duration});
+      }
+    }
     if (segments[s].motion == nullptr) continue;
     const TransitionSample& sample = graph.transition(history.steps[segments[s].step].transition).sample;
     step_parts[segments[s].step].push_back(s);
@@ -395,14 +402,6 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       return result;
     }
     result.reason = describe(graph, *conflict);
-    if (std::getenv("DASH_DEBUG")) {
-      const auto item = [&](int r, int it) {
-        const ScheduleView dv(graph, schedule); const auto segs = dv.timeline(r).segments;
-        if (it >= 0) { const auto& sg = schedule.segments[segs[it]]; return std::string(sg.move ? "move" : "trans") + " step " + std::to_string(sg.step) + " [" + std::to_string(schedule.start[segs[it]]) + "+" + std::to_string(sg.duration) + "]"; }
-        return std::string("stay before ") + std::to_string(-1 - it) + "/" + std::to_string(segs.size());
-      };
-      std::cerr << "node " << result.nodes << " extra " << node.extra.size() << " makespan " << node.makespan << ": " << result.reason << " r" << conflict->robot_a << " " << item(conflict->robot_a, conflict->item_a) << " vs r" << conflict->robot_b << " " << item(conflict->robot_b, conflict->item_b) << "\n";
-    }
     const ScheduleView view(graph, schedule);
     for (const bool a_first : {true, false}) {
       const std::optional<Edge> edge =

@@ -6,7 +6,9 @@
 // Each robot's part of the history becomes a sequence of segments (a move along its roadmap
 // path, then its part of a transition, ...; finally the move home), with the robot standing
 // still between segments. Segment start times S are the unknowns of a simple temporal network:
-//  - a robot's segments run in order (S_next >= S + duration);
+//  - a robot's segments run in order (S_next >= S + duration), and a move into a transition
+//    ends as the transition starts (the robot waits before the move, where it was, rather
+//    than in front of the transition, where it may block the robot it waits for);
 //  - both robots of a handoff start its transition together;
 //  - scheduling constraints from the object sites: a motion through an object's start site
 //    starts after that object's pick is over; a motion through its goal site ends before its

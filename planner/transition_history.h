@@ -21,10 +21,11 @@ enum class ObjectPlace { kStart, kHeld, kGoal };
 /// One transition hyperarc of a history and the move hyperarcs leading each of its robots to
 /// the transition's start.
 struct ScheduledTransition {
-  int transition = -1;              ///< MotionTransition id
-  std::vector<const Move*> moves;   ///< per motion of the sample (same order)
-  std::vector<Millis> move_starts;  ///< when each move starts
-  Millis start = 0;                 ///< when the transition starts (every robot in place)
+  int transition = -1;  ///< MotionTransition id
+  /// Per motion of the sample (same order): the moves bringing its robot to the start, in
+  /// order; two when the robot parks at home on the way (HyperpathSearch::Options).
+  std::vector<std::vector<const Move*>> moves;
+  Millis start = 0;  ///< when the transition starts (every robot in place)
 };
 
 struct TransitionHistory {

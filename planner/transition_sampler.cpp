@@ -118,14 +118,20 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
 
 /// Grasps a receiver may take of an object held in `giver`: those from above (graspsOf) of the
 /// object relabelled with each of its six faces up, i.e. every approach along a face normal,
-/// closing on either other face pair, except on the giver's face pair. Fixed order, no repeats.
+/// with the receiver coming in across both the giver's approach and closing axes (and so
+/// closing along the giver's approach axis). This is the handoff that holds in simulation (the
+/// scripted-plan tool's: giver level, receiver from above): a receiver coming head-on lost the
+/// cube when the giver withdrew, and one coming along the giver's closing axis had its housing
+/// next to a giver finger, which touched it when the giver opened. Fixed order, no repeats.
 std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver) {
   const Vector3d giver_closing = giver.X_OT.linear().col(0);
+  const Vector3d giver_approach = giver.X_OT.linear().col(2);
   std::vector<Grasp> grasps;
   for (int k = 0; k < 3; ++k) {
     for (const bool up : {true, false}) {
       for (const Grasp& grasp : graspsOf(relabel(size, k, up), size, true)) {
-        if (std::abs(grasp.X_OT.linear().col(0).dot(giver_closing)) > 0.5) continue;
+        const Vector3d approach = grasp.X_OT.linear().col(2);
+        if (std::abs(approach.dot(giver_closing)) > 0.5 || std::abs(approach.dot(giver_approach)) > 0.5) continue;
         const auto same = [&grasp](const Grasp& other) { return sameGrasp(grasp, other); };
         if (std::none_of(grasps.begin(), grasps.end(), same)) grasps.push_back(grasp);
       }
@@ -451,9 +457,9 @@ std::vector<Matrix3d> placeOrientations(const Vector3d& size, const Matrix3d& R_
 
 /// Along the line `in` to the release pose `release` above the placement, open, dwell,
 /// retreat the same way with the object resting.
-std::optional<TransitionSample> placeAlong(Context& c, const Part& p, double release, bool vertical, const Line& in) {
+std::optional<TransitionSample> placeAlong(Context& c, const Part& p, double release, bool vertical, double d,
+                                           const Line& in) {
   const TransitionSettings& s = c.settings;
-  const double d = s.cartesian_distance;
   const Carry open{kFingerOpen, std::nullopt, RestingObject{p.object, p.X_WO}};
   MotionBuilder m(*p.arm, in.start, s);
   const auto n = static_cast<double>(in.keys.size());
@@ -474,9 +480,10 @@ std::optional<TransitionSample> placeAlong(Context& c, const Part& p, double rel
   return sample;
 }
 
-/// Start back along the held grasp's approach axis from the release pose: above the
-/// placement for a vertical approach (released drop_height above it), in front of it for a
-/// horizontal one (slid in and released slide_height above it). Other approaches (from below,
+/// Start back along the held grasp's approach axis from the release pose: cartesian_distance
+/// above the placement for a vertical approach (released drop_height above it),
+/// slide_distance in front of it for a horizontal one (slid in and released slide_height above
+/// it). Other approaches (from below,
 /// oblique) give nothing.
 std::optional<TransitionSample> placeSample(Context& c, const Part& p) {
   const TransitionSettings& s = c.settings;
@@ -484,9 +491,10 @@ std::optional<TransitionSample> placeSample(Context& c, const Part& p) {
   const bool vertical = approach.z() < -1.0 + kAxisTolerance;
   if (!vertical && std::abs(approach.z()) > kAxisTolerance) return std::nullopt;
   const double release = vertical ? s.drop_height : s.slide_height;
+  const double distance = vertical ? s.cartesian_distance : s.slide_distance;
   const Pose X_WT = shifted(p.X_WO, release * kUp) * p.grasp.X_OT;
-  return firstLine(*p.arm, backedOff(X_WT, s.cartesian_distance), s.cartesian_distance * approach, s,
-                   [&](const Line& in) { return placeAlong(c, p, release, vertical, in); });
+  return firstLine(*p.arm, backedOff(X_WT, distance), distance * approach, s,
+                   [&](const Line& in) { return placeAlong(c, p, release, vertical, distance, in); });
 }
 
 // ---- handoff ---------------------------------------------------------------------------------

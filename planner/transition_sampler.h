@@ -106,6 +106,9 @@ struct TransitionSettings {
   /// in at this height. Above the collision margin (CollisionSettings::margin) it is checked
   /// against the static scene on the way; at or below it, it counts as touching its support.
   double slide_height = 0.005;
+  /// Length of a horizontal approach [m]: long enough to start outside a shelf compartment
+  /// (a back slot lies 0.22 m inside the generated shelf), where roadmap moves can reach.
+  double slide_distance = 0.25;
   double peak_factor = 1.5;          ///< peak / average joint speed of the simulator's cubic Hermite
   double max_step_jump = 0.3;        ///< largest joint change between keys of a line [rad]
   double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted

@@ -153,7 +153,7 @@ std::optional<double> speedUp(const BenchRow& row, const RowStats& s) {
   return (paper->construction + paper->search) / s.planning.mean;
 }
 
-std::string speedUpText(double x) { return core::fixedText(x, x >= 10.0 ? 0 : 1) + "x"; }
+std::string speedUpText(double x) { return core::fixedText(x, x >= 100.0 ? 0 : 1) + "x"; }
 
 std::string rate(int part, int whole) { return core::fixedText(static_cast<double>(part) / whole, 2); }
 
@@ -236,13 +236,11 @@ RunRecord runOnce(const BenchCase& c, std::uint64_t seed, const BenchOptions& op
       break;
   }
   record.reason = result.reason;
-  if (record.outcome != RunOutcome::kSolved || !result.plan) {
-    if (record.outcome == RunOutcome::kSolved) {
-      record.outcome = RunOutcome::kError;
-      record.reason = "solved without a plan";
-    }
-    return record;
+  if (record.outcome == RunOutcome::kSolved && !result.plan) {
+    record.outcome = RunOutcome::kError;
+    record.reason = "solved without a plan";
   }
+  if (record.outcome != RunOutcome::kSolved) return record;
   record.makespan = result.stats.makespan;
   record.at_budget = record.planning_seconds >= choice.time_budget;
   if (options.simulate) {
@@ -398,10 +396,11 @@ std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& o
   std::ostringstream out;
   out << "# Planner benchmark (`dashbed bench plan`)\n\n";
   out << "Seeds 1.." << options.seeds << " (world seed = planner seed), budget per run "
-      << seconds(options.greedy_budget) << " s for Greedy, " << seconds(options.optimal_budget)
-      << " s for MM-DaSH, at most " << options.max_rounds << " expansion rounds, " << options.jobs
-      << (options.jobs == 1 ? " run" : " runs") << " at a time on " << std::thread::hardware_concurrency()
-      << " hardware threads, simulation " << (options.simulate ? "on" : "off") << ".\n\n";
+      << core::significantText(options.greedy_budget, 6) << " s for Greedy, "
+      << core::significantText(options.optimal_budget, 6) << " s for MM-DaSH, at most " << options.max_rounds
+      << " expansion rounds, " << options.jobs << (options.jobs == 1 ? " run" : " runs") << " at a time on "
+      << std::thread::hardware_concurrency() << " hardware threads, simulation " << (options.simulate ? "on" : "off")
+      << ".\n\n";
   out << "Construction: task-space and motion hypergraph. Search: hyperpath queries and conflict resolution "
          "(the paper's \"Search\"). Planning: wall clock and CPU time of the whole (single-threaded) planner "
          "call; on a loaded machine the CPU time is what a free core would take. Times and makespan (plan "

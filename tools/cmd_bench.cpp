@@ -82,7 +82,8 @@ void runBenchSim(const BenchSimOptions& options) {
     params.robots = 2;
     params.cubes = cubes;
     params.start = StartLayout::kRandom;
-    const core::World world = generateSorting(params);
+    core::World world = generateSorting(params);
+    core::deriveFixtureGeometry(world);  // the bins' walls and floors, as the loader makes them
     benchOne(world.name, world, options.seconds);
   }
 }

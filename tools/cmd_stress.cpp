@@ -92,9 +92,8 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
 
   // this rank's share: every size-th trial, so that each sweep point is spread over all ranks
   std::vector<std::size_t> mine;
-  for (std::size_t i = static_cast<std::size_t>(group.rank()); i < settings.totalTrials(); i += static_cast<std::size_t>(group.size())) {
-    mine.push_back(i);
-  }
+  const auto rank = static_cast<std::size_t>(group.rank()), size = static_cast<std::size_t>(group.size());
+  for (std::size_t i = rank; i < settings.totalTrials(); i += size) mine.push_back(i);
   std::optional<ProgressBar> progress;
   if (group.rank() == 0 && (options.progress || isatty(STDERR_FILENO) == 1)) {
     progress.emplace(std::cerr, mine.size(), group.size() > 1 ? "trials on rank 0" : "trials");
@@ -114,8 +113,8 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
   const std::vector<PointSummary> points = summarize(settings, outcomes);
   std::vector<TrialOutcome> worst;
   for (const std::size_t i : worstTrials(outcomes, options.worst)) worst.push_back(outcomes[i]);
-  saveTrials(options.out_dir, runner, worst, threads);
   writeCampaignFiles(options.out_dir, info, *loaded.world, points, outcomes, worst);
+  saveTrials(options.out_dir, runner, worst, threads);
 
   std::cout << summaryText(info, points);
   printWorst(worst, options.out_dir);
@@ -123,8 +122,7 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
             << (group.size() > 1 ? " processes" : " process") << " x " << threads << " threads: "
             << core::fixedText(3600.0 * static_cast<double>(outcomes.size()) / seconds, 0)
             << " trials/hour; results in " << options.out_dir << "/\n";
-  const bool met = std::all_of(points.begin(), points.end(), [&](const PointSummary& p) { return p.meets(info.min_success); });
-  if (!met) throw CLI::RuntimeError(kExitCheckFailed);
+  if (!meetsAll(info, points)) throw CLI::RuntimeError(kExitCheckFailed);
 }
 
 // An error in an MPI job: one rank alone may have hit it while the others wait in the
@@ -163,9 +161,10 @@ void addStressCommand(CLI::App& app) {
       "stress",
       "Stress campaign: N trials with Gaussian noise on the objects' start poses (optionally mass and friction), "
       "each replaying the nominal plan open-loop or re-planning, simulated headless. Writes OUT/summary.json "
-      "(success rates with Wilson 95 % intervals, failure taxonomy), OUT/junit.xml, OUT/trials.csv and the worst "
-      "trials as OUT/trial_N/{world.yaml,plan.json,report.json}. Under `mpirun -np K` the trials are shared among "
-      "the ranks with identical results. Exit 0, or 1 when a success rate is below --min-success.");
+      "(success rates with Wilson 95 % intervals, failure taxonomy), OUT/junit.xml, OUT/trials.csv, "
+      "OUT/trials.json and the worst trials as OUT/trial_N/{world.yaml,plan.json,report.json}. Under "
+      "`mpirun -np K` the trials are shared among the ranks with identical results. Exit 0, or 1 when a success "
+      "rate is below --min-success.");
   stress->add_option("world", options->world_file, "world file (default: worlds/default.yaml)");
   stress->add_option("--plan", options->plan_file, "replay this plan (default: plan the nominal world)");
   stress->add_option("--mode", options->mode, "replay (the nominal plan, open-loop) or replan (plan every trial)")

@@ -78,7 +78,8 @@ void parallelFor(std::size_t count, int threads, const std::function<void(std::s
       }
     }
   };
-  const std::size_t pool = std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), std::max<std::size_t>(count, 1));
+  const std::size_t pool =
+      std::min<std::size_t>(static_cast<std::size_t>(std::max(threads, 1)), std::max<std::size_t>(count, 1));
   std::vector<std::thread> others;
   for (std::size_t t = 1; t < pool; ++t) others.emplace_back(worker);
   worker();  // the calling thread works too

@@ -55,9 +55,11 @@ constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice 
 constexpr double kCellPitch = kMinCubeSpacing + 2.0 * kJitter;
 
 constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0};
-// shelving: kHome would put the gripper into the shelf (TCP 0.49 m ahead of the base); this
-// pose tucks the forearm in (TCP 0.24 m ahead, 0.26 m above the table, pointing down)
-constexpr std::array<double, 6> kShelfHome{0.0, -2.2, 2.2, -1.5708, -1.5708, 0.0};
+// shelving: kHome would put the gripper into the shelf (TCP 0.49 m ahead of the base), and a
+// robot side by side with the other must wait out of its way: the arm straight up (TCP 1.08 m
+// above the table), the wrist offsets (0.38 m sideways) pointing away from the other robot
+constexpr std::array<double, 6> kShelfHomeRight{0.0, -1.5708, 0.0, -1.5708, 0.0, 0.0};  // towards +y
+constexpr std::array<double, 6> kShelfHomeLeft{3.1416, -1.5708, 0.0, -1.5708, 0.0, 0.0};  // towards -y
 constexpr core::Color kWood{0.62, 0.45, 0.28};
 constexpr core::Color kShelfGrey{0.55, 0.56, 0.6};
 
@@ -120,13 +122,18 @@ core::FixtureSpec makeTable(double size_x, double size_y) {
   return table;
 }
 
-core::FixtureSpec makeBin(const ClassInfo& cls, const Eigen::Vector2d& p_W) {
+/// A square bin with room for `cubes` cubes side by side (the planner's goal slots: 40 mm
+/// cubes at a 90 mm pitch, planner/object_sites.h), 0.2 m wide at least.
+core::FixtureSpec makeBin(const ClassInfo& cls, const Eigen::Vector2d& p_W, int cubes) {
+  constexpr double kWall = 0.008, kPitch = 0.09, kCube = 0.04, kSlack = 0.004;  // [m]
+  const int per_row = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(cubes, 1))) - 1e-9));
+  const double side = std::max(0.2, kCube + (per_row - 1) * kPitch + kSlack + 2 * kWall);
   core::FixtureSpec bin;
   bin.name = std::string("bin_") + cls.name;
   bin.type = core::FixtureType::kBin;
   bin.X_WF = core::makePoseXyzYaw(Eigen::Vector3d(p_W.x(), p_W.y(), kTableHeight), 0.0);
-  bin.size = Eigen::Vector3d(0.2, 0.2, 0.08);
-  bin.wall_thickness = 0.008;
+  bin.size = Eigen::Vector3d(side, side, 0.08);
+  bin.wall_thickness = kWall;
   bin.color = cls.color;
   return bin;
 }
@@ -220,7 +227,8 @@ core::World generateSorting(const SortingParams& params) {
     world.robots.push_back(makeRobot("r" + std::to_string(r), robots[r].p_W, yaw));
   }
   for (int c = 0; c < params.classes; ++c) {
-    world.fixtures.push_back(makeBin(classInfo(c), bin_positions[c]));
+    const int cubes_of_class = params.cubes / params.classes + (c < params.cubes % params.classes ? 1 : 0);
+    world.fixtures.push_back(makeBin(classInfo(c), bin_positions[c], cubes_of_class));
   }
 
   // class of each cube (round robin) and the robot owning that class's bin
@@ -317,8 +325,8 @@ core::World generateShelving(const ShelvingParams& params) {
 
   core::World world;
   world.fixtures.push_back(makeTable(2.0, 1.6));
-  world.robots.push_back(makeRobot("r0", Eigen::Vector2d(0.05, -0.35), 0.0, kShelfHome));
-  world.robots.push_back(makeRobot("r1", Eigen::Vector2d(0.05, 0.35), 0.0, kShelfHome));
+  world.robots.push_back(makeRobot("r0", Eigen::Vector2d(0.05, -0.35), 0.0, kShelfHomeLeft));
+  world.robots.push_back(makeRobot("r1", Eigen::Vector2d(0.05, 0.35), 0.0, kShelfHomeRight));
 
   // shelf: opening towards -x (the robots), one board 0.2 above the table and the top board
   core::FixtureSpec shelf;

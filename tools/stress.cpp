@@ -191,7 +191,8 @@ FailureClass classifyAction(const sim::ActionReport& action, const std::vector<s
 }
 
 int TrialOutcome::failedActions() const {
-  return static_cast<int>(std::count_if(actions.begin(), actions.end(), [](const ActionOutcome& a) { return !a.passed; }));
+  return static_cast<int>(
+      std::count_if(actions.begin(), actions.end(), [](const ActionOutcome& a) { return !a.passed; }));
 }
 
 void classifyReport(const sim::Report& report, const core::CheckSettings& checks, TrialOutcome& outcome) {
@@ -200,7 +201,10 @@ void classifyReport(const sim::Report& report, const core::CheckSettings& checks
   std::array<bool, kFailureClassCount> seen{};
   for (const sim::ActionReport& action : report.actions) {
     const bool passed = action.verdict == sim::Verdict::kPassed;
-    outcome.actions.push_back({action.type, action.id, passed});
+    ActionOutcome& recorded = outcome.actions.emplace_back(ActionOutcome{action.type, action.id, passed, {}});
+    for (const sim::Measurement& m : action.measurements) {
+      if (std::isfinite(m.value)) recorded.measurements.push_back({m.name, m.value});
+    }
     if (passed) continue;
     const FailureClass failure = classifyAction(action, report.events);
     seen[static_cast<std::size_t>(failure)] = true;
@@ -241,7 +245,10 @@ std::string writeOutcomesJson(const std::vector<TrialOutcome>& outcomes) {
     trial["failure"] = o.failure;
     trial["actions"] = nlohmann::ordered_json::array();
     for (const ActionOutcome& a : o.actions) {
-      trial["actions"].push_back({{"type", core::toString(a.type)}, {"id", a.id}, {"passed", a.passed}});
+      nlohmann::ordered_json measurements = nlohmann::ordered_json::object();
+      for (const MeasuredValue& m : a.measurements) measurements[m.name] = m.value;
+      trial["actions"].push_back(
+          {{"type", core::toString(a.type)}, {"id", a.id}, {"passed", a.passed}, {"measurements", measurements}});
     }
     trial["objects"] = nlohmann::ordered_json::array();
     for (const ObjectPerturbation& p : o.objects) {
@@ -259,21 +266,26 @@ std::string writeOutcomesJson(const std::vector<TrialOutcome>& outcomes) {
 std::vector<TrialOutcome> readOutcomesJson(std::string_view json_text) {
   std::vector<TrialOutcome> outcomes;
   try {
-    const nlohmann::json in = nlohmann::json::parse(json_text);
-    for (const nlohmann::json& trial : in) {
+    // ordered: measurements keep their order
+    const nlohmann::ordered_json in = nlohmann::ordered_json::parse(json_text);
+    for (const nlohmann::ordered_json& trial : in) {
       TrialOutcome o;
       o.index = trial.at("index").get<std::size_t>();
       o.point = trial.at("point").get<int>();
       o.seed = trial.at("seed").get<std::uint64_t>();
       o.passed = trial.at("passed").get<bool>();
       if (!trial.at("primary").is_null()) o.primary = parseFailureClass(trial.at("primary").get<std::string>());
-      for (const nlohmann::json& c : trial.at("classes")) o.classes.push_back(parseFailureClass(c.get<std::string>()));
+      for (const auto& c : trial.at("classes")) o.classes.push_back(parseFailureClass(c.get<std::string>()));
       o.failure = trial.at("failure").get<std::string>();
-      for (const nlohmann::json& a : trial.at("actions")) {
-        o.actions.push_back({parseActionType(a.at("type").get<std::string>()), a.at("id").get<std::string>(),
-                             a.at("passed").get<bool>()});
+      for (const auto& a : trial.at("actions")) {
+        ActionOutcome& action = o.actions.emplace_back(ActionOutcome{parseActionType(a.at("type").get<std::string>()),
+                                                                     a.at("id").get<std::string>(),
+                                                                     a.at("passed").get<bool>(), {}});
+        for (const auto& [name, value] : a.at("measurements").items()) {
+          action.measurements.push_back({name, value.get<double>()});
+        }
       }
-      for (const nlohmann::json& p : trial.at("objects")) {
+      for (const auto& p : trial.at("objects")) {
         o.objects.push_back({p.at("dx").get<double>(), p.at("dy").get<double>(), p.at("dyaw").get<double>(),
                              p.at("mass_scale").get<double>(), p.at("friction_scale").get<double>()});
       }
@@ -291,21 +303,35 @@ std::string trialDirectoryName(std::size_t index) { return "trial_" + std::to_st
 
 TrialRunner::TrialRunner(const core::World& nominal, std::string world_file, const CampaignSettings& settings,
                          std::optional<core::Plan> nominal_plan)
-    : nominal_(nominal), world_file_(std::move(world_file)), settings_(settings), nominal_plan_(std::move(nominal_plan)) {
+    : nominal_(nominal),
+      world_file_(std::move(world_file)),
+      settings_(settings),
+      nominal_plan_(std::move(nominal_plan)) {
   if (settings_.mode == StressMode::kReplay && !nominal_plan_) {
     throw std::logic_error("TrialRunner: replay mode needs the nominal plan");
   }
 }
 
-TrialRun TrialRunner::run(std::size_t index) const {
-  TrialRun run;
-  TrialOutcome& outcome = run.outcome;
+PerturbedWorld TrialRunner::perturb(std::size_t index, TrialOutcome& outcome) const {
   outcome.index = index;
   outcome.point = pointOf(settings_, index);
   outcome.seed = trialSeed(settings_.seed, index % static_cast<std::size_t>(settings_.trials));
   PerturbedWorld perturbed = perturbWorld(nominal_, settings_.sigmasAt(outcome.point), outcome.seed, world_file_);
   outcome.objects = perturbed.objects;
-  run.world_yaml = std::move(perturbed.yaml);
+  return perturbed;
+}
+
+TrialRun TrialRunner::perturbedWorld(std::size_t index) const {
+  TrialRun run;
+  run.world_yaml = perturb(index, run.outcome).yaml;
+  return run;
+}
+
+TrialRun TrialRunner::run(std::size_t index) const {
+  TrialRun run;
+  TrialOutcome& outcome = run.outcome;
+  PerturbedWorld perturbed = perturb(index, outcome);
+  run.world_yaml = perturbed.yaml;
   const std::string plan_file = trialDirectoryName(index) + "/plan.json";
 
   if (settings_.mode == StressMode::kReplay) {
@@ -326,7 +352,8 @@ TrialRun TrialRunner::run(std::size_t index) const {
     sim::validatePlanForWorld(*run.plan, *loaded.world, *loaded.robots, plan_file);
     run.report = sim::runPlan(*loaded.world, *loaded.robots, *run.plan, plan_file);
   } catch (const PlanningFailed& e) {
-    outcome.primary = e.status == PlanningStatus::kTimeout ? FailureClass::kPlannerTimeout : FailureClass::kPlannerFailure;
+    const bool timeout = e.status == PlanningStatus::kTimeout;
+    outcome.primary = timeout ? FailureClass::kPlannerTimeout : FailureClass::kPlannerFailure;
     outcome.failure = std::string("planner: ") + e.what();
   } catch (const core::WorldError& e) {  // unreachable start
     outcome.primary = FailureClass::kPlannerFailure;

@@ -120,11 +120,19 @@ FailureClass parseFailureClass(std::string_view name);
 /// The class of one failed action from its measurements and the events attributed to it.
 FailureClass classifyAction(const sim::ActionReport& action, const std::vector<sim::ExecutionEvent>& events);
 
+/// One measured value behind an action's verdict (units and thresholds are in the report).
+struct MeasuredValue {
+  std::string name;  ///< e.g. "slip"
+  double value = 0.0;
+  bool operator==(const MeasuredValue&) const = default;
+};
+
 /// One action of a trial.
 struct ActionOutcome {
   core::ActionType type = core::ActionType::kPick;
   std::string id;  ///< the report's action id, e.g. "pick cube_0 by r1"
   bool passed = true;
+  std::vector<MeasuredValue> measurements;  ///< the report's finite measurement values, in its order
   bool operator==(const ActionOutcome&) const = default;
 };
 
@@ -149,7 +157,8 @@ struct TrialOutcome {
 void classifyReport(const sim::Report& report, const core::CheckSettings& checks, TrialOutcome& outcome);
 
 /// Outcomes as one JSON text and back (numbers round-trip exactly); used to gather outcomes
-/// from MPI ranks and written beside each saved trial. Throws std::runtime_error on bad text.
+/// from MPI ranks, and written as trials.json and beside each saved trial. Throws
+/// std::runtime_error on bad text.
 std::string writeOutcomesJson(const std::vector<TrialOutcome>& outcomes);
 std::vector<TrialOutcome> readOutcomesJson(std::string_view json_text);
 
@@ -177,7 +186,13 @@ class TrialRunner {
   /// the plan is saved under in the output directory.
   TrialRun run(std::size_t index) const;
 
+  /// Only the perturbed world of trial `index` (outcome: index, point, seed and perturbation;
+  /// no plan, no report), without planning or simulating.
+  TrialRun perturbedWorld(std::size_t index) const;
+
  private:
+  PerturbedWorld perturb(std::size_t index, TrialOutcome& outcome) const;
+
   const core::World& nominal_;
   std::string world_file_;
   CampaignSettings settings_;

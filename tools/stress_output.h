@@ -1,6 +1,6 @@
 #pragma once
 // The files of a stress campaign's output directory: the results (summary.json, junit.xml,
-// trials.csv, sweep.png) and the worst trials, each replayable with
+// trials.csv, trials.json, sweep.png) and the worst trials, each replayable with
 // `dashbed sim DIR/trial_N/plan.json --world DIR/trial_N/world.yaml`.
 
 #include <filesystem>
@@ -20,11 +20,13 @@ void prepareOutputDirectory(const std::filesystem::path& out_dir);
 void saveTrial(const std::filesystem::path& out_dir, const TrialRun& run);
 
 /// Runs the trials of `worst` again on `threads` threads, checks that each reproduces its
-/// recorded outcome (std::logic_error otherwise: a determinism bug) and saves it.
+/// recorded outcome (std::logic_error otherwise: a determinism bug) and saves it. A trial
+/// without a plan (planner failure) is not planned again: its world is saved.
 void saveTrials(const std::filesystem::path& out_dir, const TrialRunner& runner, const std::vector<TrialOutcome>& worst,
                 int threads);
 
-/// Writes summary.json, junit.xml, trials.csv and, for a sweep, sweep.png into `out_dir`.
+/// Writes summary.json, junit.xml, trials.csv, trials.json (every outcome, with the actions'
+/// measurements) and, for a sweep, sweep.png into `out_dir`.
 /// Throws std::runtime_error naming a file that cannot be written.
 void writeCampaignFiles(const std::filesystem::path& out_dir, const CampaignInfo& info, const core::World& world,
                         const std::vector<PointSummary>& points, const std::vector<TrialOutcome>& outcomes,

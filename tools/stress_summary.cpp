@@ -56,14 +56,12 @@ std::string xmlText(const std::string& text) {
   return out;
 }
 
-bool meetsAll(const CampaignInfo& info, const std::vector<PointSummary>& points) {
-  return std::all_of(points.begin(), points.end(), [&](const PointSummary& p) { return p.meets(info.min_success); });
-}
-
 // the lines describing one point's results (stdout and JUnit)
 std::string pointText(const PointSummary& p) {
   std::string text = "sigma_xy " + millimetres(p.sigma_xy) + ": trials passed " + rateText(p.trials) + "\n";
-  for (const auto& [type, rate] : p.per_type) text += "  " + std::string(core::toString(type)) + " actions passed " + rateText(rate) + "\n";
+  for (const auto& [type, rate] : p.per_type) {
+    text += "  " + std::string(core::toString(type)) + " actions passed " + rateText(rate) + "\n";
+  }
   std::string failures;
   for (int c = 0; c < kFailureClassCount; ++c) {
     if (p.any[c] == 0) continue;
@@ -75,6 +73,10 @@ std::string pointText(const PointSummary& p) {
 }
 
 }  // namespace
+
+bool meetsAll(const CampaignInfo& info, const std::vector<PointSummary>& points) {
+  return std::all_of(points.begin(), points.end(), [&](const PointSummary& p) { return p.meets(info.min_success); });
+}
 
 RateInterval wilsonInterval(int successes, int trials, double z) {
   RateInterval r;
@@ -155,7 +157,8 @@ std::string writeSummaryJson(const CampaignInfo& info, const std::vector<PointSu
                          {"sweep_xy", s.sweep_xy},
                          {"invalid_starts", "redrawn"}};
   if (s.mode == StressMode::kReplan) {
-    out["planner"] = {{"method", s.planner.method}, {"time_budget", s.planner.time_budget}, {"max_rounds", s.planner.max_rounds}};
+    out["planner"] = {
+        {"method", s.planner.method}, {"time_budget", s.planner.time_budget}, {"max_rounds", s.planner.max_rounds}};
   }
   out["interval"] = "Wilson score, 95 %";
   out["min_success"] = info.min_success ? Json(*info.min_success) : Json();

@@ -50,6 +50,9 @@ struct CampaignInfo {
   std::optional<double> min_success;
 };
 
+/// True when every point meets info.min_success (always without one).
+bool meetsAll(const CampaignInfo& info, const std::vector<PointSummary>& points);
+
 /// Per-point summaries of `outcomes` (all trials of the campaign, any order).
 std::vector<PointSummary> summarize(const CampaignSettings& settings, const std::vector<TrialOutcome>& outcomes);
 

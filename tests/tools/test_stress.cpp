@@ -116,6 +116,24 @@ TEST_CASE("perturbation sampling is seeded and reproducible", "[stress]") {
   }
 }
 
+TEST_CASE("a trial's world depends only on the campaign seed, its sweep point and its index", "[stress]") {
+  CampaignSettings settings = replaySettings(3, 0.0);
+  settings.sweep_xy = {0.001, 0.002};
+  const TrialRunner runner = replayRunner(kCentredScript, settings);
+  PerturbationSigmas sigmas = settings.sigmas;
+  sigmas.xy = 0.002;
+  const TrialRun trial = runner.perturbedWorld(4);  // point 1, its trial 1
+  CHECK(trial.outcome.index == 4);
+  CHECK(trial.outcome.point == 1);
+  CHECK(trial.outcome.seed == trialSeed(7, 1));
+  CHECK(trial.world_yaml == perturbWorld(*defaultWorld().world, sigmas, trialSeed(7, 1), "default.yaml").yaml);
+  CHECK_FALSE(trial.plan);
+  // the same draws at the first point, half the size
+  const TrialRun same_draws = runner.perturbedWorld(1);
+  REQUIRE(same_draws.outcome.objects.size() == trial.outcome.objects.size());
+  CHECK(same_draws.outcome.objects[0].dx == Approx(0.5 * trial.outcome.objects[0].dx));
+}
+
 TEST_CASE("sigmas too large for the world are a clear error", "[stress]") {
   PerturbationSigmas sigmas;
   sigmas.xy = 100.0;  // every draw lands far off the table
@@ -178,7 +196,8 @@ TEST_CASE("a saved trial replays to the same report", "[stress][sim]") {
   const std::filesystem::path dir = out / trialDirectoryName(failed.index);
   const core::LoadedWorld world = core::loadWorld(dir / "world.yaml");
   const core::Plan plan = core::loadPlanFile(dir / "plan.json");
-  const sim::Report replay = sim::runPlan(*world.world, *world.robots, plan, trialDirectoryName(failed.index) + "/plan.json");
+  const sim::Report replay =
+      sim::runPlan(*world.world, *world.robots, plan, trialDirectoryName(failed.index) + "/plan.json");
   CHECK(sim::writeReportJson(replay) == core::readTextFile<std::runtime_error>(dir / "report.json", "report"));
   CHECK(readOutcomesJson(core::readTextFile<std::runtime_error>(dir / "trial.json", "trial")) ==
         std::vector<TrialOutcome>{failed});
@@ -249,6 +268,8 @@ TEST_CASE("a report gives the primary class and every class of a trial", "[stres
   sim::ActionReport pick;
   pick.type = core::ActionType::kPick;
   pick.id = "pick cube_0 by r0";
+  pick.measurements = {{"lift_height", 0.03, "m", 0.005, ">=", true},
+                       {"slip", std::nan(""), "m", 0.005, "<=", true}};  // not finite: not recorded
   report.actions.push_back(pick);
   report.actions.push_back(failedAction(core::ActionType::kHandoff, "handoff cube_0 from r0 to r1", "overlap"));
   report.actions.push_back(failedAction(core::ActionType::kPlace, "place cube_0 in bin by r1", "tilt"));
@@ -263,6 +284,9 @@ TEST_CASE("a report gives the primary class and every class of a trial", "[stres
   CHECK(outcome.classes == std::vector<FailureClass>{FailureClass::kHandoffDrop, FailureClass::kMisplaced,
                                                      FailureClass::kCollision, FailureClass::kTracking});
   CHECK(outcome.failedActions() == 2);
+  REQUIRE(outcome.actions.size() == 3);
+  CHECK(outcome.actions[0].measurements == std::vector<MeasuredValue>{{"lift_height", 0.03}});
+  CHECK(outcome.actions[1].measurements == std::vector<MeasuredValue>{{"overlap", 0.0}});
   CHECK(outcome.failure.rfind("handoff cube_0 from r0 to r1: ", 0) == 0);
 }
 
@@ -273,8 +297,9 @@ std::vector<TrialOutcome> madeUpOutcomes() {
     o.index = i;
     o.seed = trialSeed(1, i);
     o.passed = i % 5 != 0;  // trials 0 and 5 fail
-    o.actions = {{core::ActionType::kPick, "pick cube_0 by r1", i != 0},
-                 {core::ActionType::kPlace, "place cube_0 in bin_green by r1", o.passed}};
+    const double lift = 0.1 / (1.0 + static_cast<double>(i));
+    o.actions = {{core::ActionType::kPick, "pick cube_0 by r1", i != 0, {{"lift_height", lift}, {"slip", 3e-4}}},
+                 {core::ActionType::kPlace, "place cube_0 in bin_green by r1", o.passed, {}}};
     if (!o.passed) {
       o.primary = i == 0 ? FailureClass::kMissedGrasp : FailureClass::kMisplaced;
       o.classes = {FailureClass::kMisplaced};
@@ -318,8 +343,9 @@ TEST_CASE("campaign summary counts rates, classes and the worst trials", "[stres
   CHECK(writeStressJUnit(info, points).find("<failure") == std::string::npos);
   const std::string csv = writeTrialsCsv(*defaultWorld().world, settings, {outcomes[0]});
   CHECK(csv.rfind("index,point,sigma_xy,seed,passed,primary,classes,failed_actions,actions,cube_0.dx,", 0) == 0);
-  CHECK(csv.find("\n0,0,0.002," + std::to_string(trialSeed(1, 0)) + ",0,missed_grasp,missed_grasp+misplaced,2,2,0,-0.002,0.01,1,1\n") !=
-        std::string::npos);
+  const std::string line = "\n0,0,0.002," + std::to_string(trialSeed(1, 0)) +
+                           ",0,missed_grasp,missed_grasp+misplaced,2,2,0,-0.002,0.01,1,1\n";
+  CHECK(csv.find(line) != std::string::npos);
 }
 
 TEST_CASE("a sweep gives one point per sigma and a plot", "[stress]") {
