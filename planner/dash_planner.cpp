@@ -96,7 +96,16 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   {
     const HyperpathSearch probe(*graph);
     for (int o = 0; o < task_space.numObjects(); ++o) {
-      const std::string reason = unreachableReason(*world.world, task_space, probe, o);
+      std::string reason = unreachableReason(*world.world, task_space, probe, o);
+      // picks are enumerated, not drawn: more rounds never add one
+      std::size_t picks = 0;
+      for (std::size_t h = 0; h < task_space.numHyperarcs() && reason.empty(); ++h) {
+        const TransitionHyperarc& arc = task_space.hyperarcs()[h];
+        if (arc.object == o && arc.kind == TransitionKind::kPick) picks += graph->transitionsOf(static_cast<int>(h), -1).size();
+      }
+      if (reason.empty() && graph->sites().goal[o] && picks == 0) {
+        reason = "no collision-free grasp of " + world.world->objects[o].name + " at its start for any robot reaching it";
+      }
       if (!reason.empty()) {
         result.reason = reason;
         record();
@@ -143,7 +152,6 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
-    HyperpathSearch search(*graph);
     // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at home
     for (const bool park : {false, true}) {
       HyperpathSearch query(*graph, park);
@@ -155,6 +163,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     }
     if (settings.method == Method::kOptimal && !time_up()) {
       // Next-Best Search: task plans in order of optimistic makespan until no better is possible
+      HyperpathSearch search(*graph);
       for (int k = 0; k < settings.next_best_plans && !time_up(); ++k) {
         const SearchResult next = search_timed([&] { return search.nextBest(search_budget); });
         if (next.status != SearchStatus::kFound || next.plan->makespan() >= best) break;

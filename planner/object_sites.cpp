@@ -18,8 +18,10 @@ std::optional<RestingObject> ObjectSites::site(int index) const {
 
 std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size) {
   const double pitch_x = size.x() + 2 * kFingerRoom, pitch_y = size.y() + 2 * kFingerRoom;
-  const int nx = std::max(1, static_cast<int>(std::floor((region.size.x() - size.x()) / pitch_x)) + 1);
-  const int ny = std::max(1, static_cast<int>(std::floor((region.size.y() - size.y()) / pitch_y)) + 1);
+  // centres keep the open gripper's reach from the region's edges (a bin's walls)
+  const double edge_x = std::max(size.x() / 2, kOpenFingerReach), edge_y = std::max(size.y() / 2, kOpenFingerReach);
+  const int nx = std::max(1, static_cast<int>(std::floor((region.size.x() - 2 * edge_x) / pitch_x + 1e-9)) + 1);
+  const int ny = std::max(1, static_cast<int>(std::floor((region.size.y() - 2 * edge_y) / pitch_y + 1e-9)) + 1);
   std::vector<Eigen::Vector3d> slots;
   for (int iy = 0; iy < ny; ++iy) {
     for (int ix = 0; ix < nx; ++ix) {

@@ -22,6 +22,10 @@ namespace dashbed::planner {
 /// Room a gripper needs beside a placed object on each side: 17.4 mm fingertip thickness plus
 /// clearance (URDF finger geometry) [m].
 inline constexpr double kFingerRoom = 0.025;
+/// How far an open Hand-E reaches from the TCP along its closing axis, plus 2 mm clearance:
+/// 25 mm stroke + 17.4 mm fingertip (URDF finger geometry) + 2 mm [m]. A slot's centre keeps
+/// this far from the region's edges, so the gripper can open there beside a bin wall.
+inline constexpr double kOpenFingerReach = 0.0444;
 
 struct ObjectSites {
   std::vector<core::Pose> start;                ///< [object] X_WO at its start
@@ -37,7 +41,8 @@ struct ObjectSites {
   std::optional<RestingObject> site(int index) const;
 };
 
-/// Object-centre positions for objects of `size` side by side in a region, row by row.
+/// Object-centre positions for objects of `size` side by side in a region, row by row, at
+/// least kOpenFingerReach (or half the object) from its edges; one centred slot when none fits.
 std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size);
 
 /// The sites of every object of a world. Throws std::runtime_error naming the region when more

@@ -10,6 +10,7 @@
 
 #include "core/colors.h"
 #include "core/pose.h"
+#include "planner/object_sites.h"
 
 namespace dashbed::tools {
 
@@ -61,6 +62,7 @@ constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.
 constexpr std::array<double, 6> kShelfHomeRight{0.0, -1.5708, 0.0, -1.5708, 0.0, 0.0};  // towards +y
 constexpr std::array<double, 6> kShelfHomeLeft{3.1416, -1.5708, 0.0, -1.5708, 0.0, 0.0};  // towards -y
 constexpr core::Color kWood{0.62, 0.45, 0.28};
+constexpr double kBinWall = 0.008;  // [m]
 constexpr core::Color kShelfGrey{0.55, 0.56, 0.6};
 
 // object classes in order, coloured by the world format's named colours (core/colors.h)
@@ -122,18 +124,23 @@ core::FixtureSpec makeTable(double size_x, double size_y) {
   return table;
 }
 
-/// A square bin with room for `cubes` cubes side by side (the planner's goal slots: 40 mm
-/// cubes at a 90 mm pitch, planner/object_sites.h), 0.2 m wide at least.
-core::FixtureSpec makeBin(const ClassInfo& cls, const Eigen::Vector2d& p_W, int cubes) {
-  constexpr double kWall = 0.008, kPitch = 0.09, kCube = 0.04, kSlack = 0.004;  // [m]
+/// Side of a square bin with room for `cubes` cubes side by side (the planner's goal slots, with
+/// their pitch and the open gripper's reach from the walls: planner/object_sites.h), 0.2 m at
+/// least [m].
+double binSide(int cubes) {
+  constexpr double kSlack = 0.004;  // [m]
+  const double pitch = 0.04 + 2 * planner::kFingerRoom;  // 40 mm cubes
   const int per_row = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(std::max(cubes, 1))) - 1e-9));
-  const double side = std::max(0.2, kCube + (per_row - 1) * kPitch + kSlack + 2 * kWall);
+  return std::max(0.2, 2 * planner::kOpenFingerReach + (per_row - 1) * pitch + kSlack + 2 * kBinWall);
+}
+
+core::FixtureSpec makeBin(const ClassInfo& cls, const Eigen::Vector2d& p_W, double side) {
   core::FixtureSpec bin;
   bin.name = std::string("bin_") + cls.name;
   bin.type = core::FixtureType::kBin;
   bin.X_WF = core::makePoseXyzYaw(Eigen::Vector3d(p_W.x(), p_W.y(), kTableHeight), 0.0);
   bin.size = Eigen::Vector3d(side, side, 0.08);
-  bin.wall_thickness = kWall;
+  bin.wall_thickness = kBinWall;
   bin.color = cls.color;
   return bin;
 }
@@ -194,12 +201,14 @@ core::World generateSorting(const SortingParams& params) {
   std::vector<Zone> exclusive_zones;  // one per robot, in front of it
   std::vector<Zone> random_zones;     // the zones random starts draw from
   std::vector<Eigen::Vector2d> bin_positions(kClassNames.size());
+  std::vector<Eigen::Vector2d> bin_outward(kClassNames.size());  // a bigger bin grows this way
 
   if (params.robots == 2) {
     world.fixtures.push_back(makeTable(2.0, 1.4));
     robots = {{{-0.7, 0.0}, {1.0, 0.0}, {0, 2}},  // r0 owns red, blue
               {{0.7, 0.0}, {-1.0, 0.0}, {1, 3}}};  // r1 owns green, yellow
     bin_positions = {{-0.5, -0.42}, {0.5, 0.42}, {-0.5, 0.42}, {0.5, -0.42}};
+    bin_outward = {{0.0, -1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.0, -1.0}};  // away from the cubes
     // zones in the world frame (identity frame): robot-exclusive strips and the shared area
     const Eigen::Vector2d o(0.0, 0.0), x(1.0, 0.0);
     exclusive_zones = {{o, x, -0.45, -0.25, -0.26, 0.26}, {o, x, 0.25, 0.45, -0.26, 0.26}};
@@ -217,6 +226,7 @@ core::World generateSorting(const SortingParams& params) {
       robots.push_back({p, u, {k}});
       // the bin is beside the robot on its left and slightly behind it
       bin_positions[k] = (p - 0.2 * u + 0.3 * v).array() + 0.0;
+      bin_outward[k] = v;
       exclusive_zones.push_back({p, u, 0.25, 0.45, -0.15, 0.15});
     }
     random_zones = exclusive_zones;
@@ -228,7 +238,9 @@ core::World generateSorting(const SortingParams& params) {
   }
   for (int c = 0; c < params.classes; ++c) {
     const int cubes_of_class = params.cubes / params.classes + (c < params.cubes % params.classes ? 1 : 0);
-    world.fixtures.push_back(makeBin(classInfo(c), bin_positions[c], cubes_of_class));
+    const double side = binSide(cubes_of_class);
+    const Eigen::Vector2d p_W = bin_positions[c] + (side - 0.2) / 2 * bin_outward[c];
+    world.fixtures.push_back(makeBin(classInfo(c), p_W, side));
   }
 
   // class of each cube (round robin) and the robot owning that class's bin
