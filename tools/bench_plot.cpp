@@ -2,12 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
 #include <iterator>
 #include <limits>
 
 #include "core/number_text.h"
 #include "sim/render/overlay.h"
+#include "tools/plot_canvas.h"
 
 namespace dashbed::tools {
 namespace {
@@ -16,57 +16,8 @@ constexpr int kLegendWidth = 360;
 constexpr int kLeft = 100;  // plot area margins [px]
 constexpr int kTop = 60;
 constexpr int kBottom = 70;
-constexpr int kTextScale = 2;
-constexpr int kTextHeight = 7 * kTextScale;
-constexpr int kDash = 8;  // dash and gap length [px]
 
-const core::Color kAxis{0.1, 0.1, 0.1};
 const core::Color kGrid{0.87, 0.87, 0.87};
-
-void setPixel(render::Image& image, int x, int y, const core::Color& c) {
-  if (x < 0 || y < 0 || x >= image.width || y >= image.height) return;
-  std::uint8_t* p = image.pixel(x, y);
-  p[0] = static_cast<std::uint8_t>(std::lround(255.0 * c.r));
-  p[1] = static_cast<std::uint8_t>(std::lround(255.0 * c.g));
-  p[2] = static_cast<std::uint8_t>(std::lround(255.0 * c.b));
-}
-
-// a line `width` pixels thick, stepped along its longer axis; dashed: every other kDash pixels
-void drawLine(render::Image& image, double x0, double y0, double x1, double y1, const core::Color& c, int width,
-              bool dashed = false) {
-  const int steps = static_cast<int>(std::ceil(std::max(std::abs(x1 - x0), std::abs(y1 - y0)))) + 1;
-  const int lo = -(width - 1) / 2, hi = width / 2;
-  for (int i = 0; i <= steps; ++i) {
-    if (dashed && (i / kDash) % 2 == 1) continue;
-    const double t = static_cast<double>(i) / steps;
-    const int x = static_cast<int>(std::lround(x0 + t * (x1 - x0)));
-    const int y = static_cast<int>(std::lround(y0 + t * (y1 - y0)));
-    for (int dy = lo; dy <= hi; ++dy) {
-      for (int dx = lo; dx <= hi; ++dx) setPixel(image, x + dx, y + dy, c);
-    }
-  }
-}
-
-void fillCircle(render::Image& image, double cx, double cy, double radius, const core::Color& c) {
-  const int r = static_cast<int>(std::ceil(radius));
-  for (int dy = -r; dy <= r; ++dy) {
-    for (int dx = -r; dx <= r; ++dx) {
-      if (dx * dx + dy * dy <= radius * radius) {
-        setPixel(image, static_cast<int>(std::lround(cx)) + dx, static_cast<int>(std::lround(cy)) + dy, c);
-      }
-    }
-  }
-}
-
-// a tick spacing of 1, 2 or 5 times a power of ten giving at most about `intervals` up to `max`
-double tickStep(double max, int intervals) {
-  const double rough = max / intervals;
-  const double power = std::pow(10.0, std::floor(std::log10(rough)));
-  for (const double factor : {1.0, 2.0, 5.0}) {
-    if (factor * power >= rough) return factor * power;
-  }
-  return 10.0 * power;
-}
 
 // 10^k without an exponent: "0.001", "1", "1000"
 std::string decadeText(int k) { return core::fixedText(std::pow(10.0, k), std::max(0, -k)); }
@@ -80,6 +31,7 @@ bool drawn(const LinePlot& plot, const std::pair<double, double>& p) {
 render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
   render::Image image = render::Image::filled(width, height, 255, 255, 255);
   const int x_lo = kLeft, x_hi = width - kLegendWidth, y_lo = height - kBottom, y_hi = kTop;  // pixel bounds
+  const PlotArea area{x_lo, x_hi, y_lo, y_hi};
 
   double x_max = 0.0, y_min = std::numeric_limits<double>::infinity(), y_max = 0.0;
   for (const PlotSeries& s : plot.series) {
@@ -118,22 +70,13 @@ render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
   // grid, ticks, labels
   for (int k = 0; k * x_step <= x_max * (1 + 1e-9); ++k) {
     const int x = static_cast<int>(std::lround(px(k * x_step)));
-    drawLine(image, x, y_lo, x, y_hi, kGrid, 1);
-    const std::string label = core::significantText(k * x_step, 6);
-    render::drawText(image, x - render::textWidth(label, kTextScale) / 2, y_lo + 10, label, kAxis, kTextScale);
+    drawXTick(image, area, x, core::significantText(k * x_step, 6), kGrid);
   }
   for (const auto& [a, label] : y_ticks) {
     const int y = static_cast<int>(std::lround(y_lo + (y_hi - y_lo) * (a - axis_lo) / (axis_hi - axis_lo)));
-    drawLine(image, x_lo, y, x_hi, y, kGrid, 1);
-    render::drawText(image, x_lo - 10 - render::textWidth(label, kTextScale), y - kTextHeight / 2, label, kAxis,
-                     kTextScale);
+    drawYTick(image, area, y, label, kGrid);
   }
-  drawLine(image, x_lo, y_lo, x_hi, y_lo, kAxis, 2);
-  drawLine(image, x_lo, y_lo, x_lo, y_hi, kAxis, 2);
-  render::drawText(image, (x_lo + x_hi - render::textWidth(plot.x_label, kTextScale)) / 2, y_lo + 40, plot.x_label,
-                   kAxis, kTextScale);
-  render::drawText(image, 10, y_hi - 28, plot.y_label, kAxis, kTextScale);
-  render::drawText(image, 10, 10, plot.title, kAxis, kTextScale);
+  drawAxes(image, area, plot.x_label, plot.y_label, plot.title);
 
   // the series, then the legend
   for (const PlotSeries& s : plot.series) {
@@ -152,10 +95,10 @@ render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
   const int legend_x = x_hi + 20;
   for (std::size_t i = 0; i < plot.series.size(); ++i) {
     const PlotSeries& s = plot.series[i];
-    const int y = y_hi + static_cast<int>(i) * (kTextHeight + 9) + kTextHeight / 2;
+    const int y = y_hi + static_cast<int>(i) * (kPlotTextHeight + 9) + kPlotTextHeight / 2;
     drawLine(image, legend_x, y, legend_x + 34, y, s.color, 2, s.dashed);
     if (!s.dashed) fillCircle(image, legend_x + 17, y, 4.5, s.color);
-    render::drawText(image, legend_x + 44, y - kTextHeight / 2, s.label, kAxis, kTextScale);
+    render::drawText(image, legend_x + 44, y - kPlotTextHeight / 2, s.label, kPlotInk, kPlotTextScale);
   }
   return image;
 }
