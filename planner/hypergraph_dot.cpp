@@ -68,6 +68,39 @@ void writeDot(std::ostream& out, const TaskSpaceHypergraph& graph, const DotOpti
   out << "}\n";
 }
 
+void writeMotionDot(std::ostream& out, const MotionHypergraph& graph) {
+  const TaskSpaceHypergraph& ts = graph.taskSpace();
+  out << "digraph \"motion_hypergraph\" {\n  rankdir=LR;\n  node [fontname=\"Helvetica\", fontsize=9];\n";
+  out << "  // " << graph.numVertices() << " motion vertices, " << graph.numTransitions() << " transition hyperarcs\n";
+  for (std::size_t t = 0; t < ts.numVertices(); ++t) {
+    const std::vector<int> members = graph.verticesOf(static_cast<int>(t));
+    if (members.empty()) continue;
+    out << "  subgraph \"cluster_" << t << "\" {\n    label=" << quoted(ts.vertexName(static_cast<int>(t))) << ";\n";
+    for (const int v : members) {
+      const MotionVertex& m = graph.vertex(v);
+      std::ostringstream label;
+      label << 'm' << v;
+      if (m.grasp >= 0) label << " g" << m.grasp;
+      if (m.site >= 0) label << (m.site % 2 == 0 ? " start" : " goal");
+      out << "    m" << v << " [label=" << quoted(label.str()) << ", " << vertexStyle(ts.vertices()[t].kind) << "];\n";
+    }
+    out << "  }\n";
+  }
+  for (std::size_t e = 0; e < graph.numTransitions(); ++e) {
+    const MotionTransition& transition = graph.transition(static_cast<int>(e));
+    const char* color = hyperarcColor(transition.sample.kind);
+    out << "  t" << e << " [shape=circle, width=0.1, height=0.1, fixedsize=true, label=\"\", style=filled, fillcolor=\""
+        << color << "\", color=\"" << color << "\", tooltip=" << quoted(ts.hyperarcName(transition.sample.hyperarc))
+        << "];\n";
+    for (const int v : transition.tail) out << "  m" << v << " -> t" << e << " [arrowhead=none, color=\"" << color << "\"];\n";
+    for (const int v : transition.head) out << "  t" << e << " -> m" << v << " [color=\"" << color << "\"];\n";
+  }
+  out << "  source [shape=doublecircle, label=\"source\"];\n  target [shape=doublecircle, label=\"target\"];\n";
+  for (const int v : graph.sourceVertices()) out << "  source -> m" << v << " [style=dashed];\n";
+  for (const int v : graph.targetVertices()) out << "  m" << v << " -> target [style=dashed];\n";
+  out << "}\n";
+}
+
 std::string toDot(const TaskSpaceHypergraph& graph, const DotOptions& options) {
   std::ostringstream out;
   writeDot(out, graph, options);

@@ -1,5 +1,5 @@
 #pragma once
-// Graphviz DOT of the task-space hypergraph. Each hyperarc is drawn as a small node joined by
+// Graphviz DOT of the task-space hypergraph (and of the motion hypergraph, below). Each hyperarc is drawn as a small node joined by
 // plain lines from its tail vertices and by arrows to its head vertices (the usual drawing of
 // a directed hypergraph as its bipartite incidence graph; paper Fig. 4).
 //
@@ -10,6 +10,7 @@
 #include <ostream>
 #include <string>
 
+#include "planner/motion_hypergraph.h"
 #include "planner/task_space_hypergraph.h"
 
 namespace dashbed::planner {
@@ -25,5 +26,11 @@ void writeDot(std::ostream& out, const TaskSpaceHypergraph& graph, const DotOpti
 
 /// The DOT text of `graph`.
 std::string toDot(const TaskSpaceHypergraph& graph, const DotOptions& options = {});
+
+/// Graphviz DOT of the motion hypergraph as sampled so far: its motion vertices in one cluster
+/// per task-space vertex (the vertex map), its transition hyperarcs drawn like the task-space
+/// hyperarcs, and the virtual source and target joined to the start and goal vertices. Move
+/// hyperarcs are planned on demand by the search and are not drawn.
+void writeMotionDot(std::ostream& out, const MotionHypergraph& graph);
 
 }  // namespace dashbed::planner

@@ -13,6 +13,7 @@
 #include "core/asset_paths.h"
 #include "core/world_loader.h"
 #include "planner/hypergraph_dot.h"
+#include "planner/motion_hypergraph.h"
 #include "planner/representation_analysis.h"
 #include "planner/task_space_hypergraph.h"
 #include "tools/cli_support.h"
@@ -30,7 +31,31 @@ struct GraphOptions {
   std::vector<int> counts;  // {robots, objects} when --counts is given
   bool json = false;
   bool list = false;
+  std::string motion_output;  // the motion hypergraph's DOT, when given
 };
+
+/// The motion hypergraph's first round (Alg. 2): every pick, then the places and handoffs of
+/// every grasp the picks and handoffs give, twice over; written as DOT.
+void writeMotionDotFile(const core::LoadedWorld& loaded, const planner::TaskSpaceHypergraph& graph,
+                        const std::string& output, std::ostream& report) {
+  planner::MotionHypergraph motion(loaded, graph, 1);
+  for (int pass = 0; pass < 2; ++pass) {
+    for (std::size_t h = 0; h < graph.numHyperarcs(); ++h) {
+      const planner::TransitionHyperarc& arc = graph.hyperarcs()[h];
+      if (arc.kind == TransitionKind::kPick) {
+        motion.transitionsOf(static_cast<int>(h), -1);
+        continue;
+      }
+      const std::size_t grasps = motion.graspsOf(arc.object).size();  // sampling may add grasps
+      for (std::size_t g = 0; g < grasps; ++g) motion.transitionsOf(static_cast<int>(h), static_cast<int>(g));
+    }
+  }
+  std::ofstream out(output);
+  planner::writeMotionDot(out, motion);
+  if (!out) throw std::runtime_error("cannot write " + output);
+  report << "motion hypergraph (first round, seed 1): " << motion.numVertices() << " motion vertices, "
+         << motion.numTransitions() << " transition hyperarcs; wrote Graphviz DOT to " << output << "\n";
+}
 
 // the composite graph's size, or nothing when it exceeds 64 bits
 std::optional<RepresentationSize> compositeSizeOrOverflow(int robots, int objects) {
@@ -158,6 +183,7 @@ void runWorld(const GraphOptions& options) {
     writeDotFile(graph, options.output);
     if (!options.json && options.output != "-") report << "wrote Graphviz DOT to " << options.output << "\n";
   }
+  if (!options.motion_output.empty()) writeMotionDotFile(loaded, graph, options.motion_output, report);
 }
 
 }  // namespace
@@ -174,6 +200,9 @@ void addGraphCommand(CLI::App& app) {
           ->check(CLI::Range(0, 1000000))
           ->excludes(world);
   graph->add_option("-o,--output", options->output, "write the Graphviz DOT here ('-': standard output)")
+      ->excludes(counts);
+  graph->add_option("--motion", options->motion_output,
+                    "also sample the motion hypergraph's first round and write its Graphviz DOT here")
       ->excludes(counts);
   graph->add_flag("--json", options->json, "print JSON");
   graph->add_flag("--list", options->list, "also list every vertex and hyperarc by name");

@@ -3,7 +3,9 @@
 // own checks), are deterministic, and infeasible worlds say why.
 #include <catch2/catch.hpp>
 
+#include <cctype>
 #include <map>
+#include <sstream>
 #include <set>
 #include <string>
 
@@ -14,6 +16,7 @@
 #include "planner/collision_checker.h"
 #include "planner/dash_planner.h"
 #include "planner/hyperpath_search.h"
+#include "planner/hypergraph_dot.h"
 
 using namespace dashbed;
 using namespace dashbed::planner;
@@ -200,4 +203,29 @@ TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
   REQUIRE(greedy.status == PlannerStatus::kSolved);
   REQUIRE(optimal.status == PlannerStatus::kSolved);
   CHECK(optimal.stats.makespan <= greedy.stats.makespan);
+}
+
+TEST_CASE("the motion hypergraph's DOT shows its vertex map and transitions", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 1);
+  std::size_t picks = 0;
+  for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
+    if (task_space.hyperarcs()[h].kind == TransitionKind::kPick) picks += graph.transitionsOf(static_cast<int>(h), -1).size();
+  }
+  REQUIRE(picks == graph.numTransitions());
+  std::ostringstream out;
+  writeMotionDot(out, graph);
+  const std::string dot = out.str();
+  std::size_t arcs = 0, clusters = 0;
+  for (std::size_t at = dot.find(" -> t"); at != std::string::npos; at = dot.find(" -> t", at + 1)) {
+    if (std::isdigit(static_cast<unsigned char>(dot[at + 5])) != 0) ++arcs;  // not "-> target"
+  }
+  for (std::size_t at = dot.find("subgraph"); at != std::string::npos; at = dot.find("subgraph", at + 1)) ++clusters;
+  CHECK(arcs == 2 * picks);  // a pick's tail: the robot and the object
+  // every robot alone, every object resting, and the robot-holding elements the picks reach
+  std::set<int> task_vertices;
+  for (std::size_t v = 0; v < graph.numVertices(); ++v) task_vertices.insert(graph.vertex(static_cast<int>(v)).task_vertex);
+  CHECK(clusters == task_vertices.size());
+  CHECK_THAT(dot, Contains("source ->") && Contains("-> target"));
 }
