@@ -17,14 +17,14 @@
 #include "planner/dash_planner.h"
 #include "planner/hyperpath_search.h"
 #include "planner/hypergraph_dot.h"
+#include "tests/planner/dash_test_support.h"
 
 using namespace dashbed;
 using namespace dashbed::planner;
+using namespace dashbed::planner::testing;
 using Catch::Matchers::Contains;
 
 namespace {
-
-std::string worldPath(const std::string& name) { return std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + name; }
 
 /// A world loaded without the reachability check, so that the planner has to find out.
 core::LoadedWorld unchecked(core::World world) {
@@ -35,15 +35,6 @@ core::LoadedWorld unchecked(core::World world) {
   return loaded;
 }
 
-PlannerSettings testSettings(Method method = Method::kGreedy) {
-  PlannerSettings settings;
-  settings.method = method;
-  settings.seed = 7;
-  settings.max_rounds = 8;
-  settings.search_expansions = 5000;
-  settings.conflict_nodes = 300;
-  return settings;
-}
 
 /// Every object's actions form a chain: picked at its start by one robot, handed along, placed
 /// in its goal region by the robot holding it; no robot ever holds two objects.
@@ -157,52 +148,6 @@ TEST_CASE("a cube no robot can reach makes the problem infeasible and is named",
   CHECK(result.status == PlannerStatus::kInfeasible);
   CHECK_THAT(result.reason, Contains(loaded.world->objects[2].name));
   CHECK_FALSE(result.plan);
-}
-
-TEST_CASE("shelving task plans fill the back slot before the front slot in front of it", "[planner][dash][shelf]") {
-  // the scheduling constraint at the level of the hyperpath search: a place into a back slot
-  // touches the goal site of the object in front, so the front object waits
-  const core::LoadedWorld world = core::loadWorld(worldPath("shelf_2r_4o.yaml"));
-  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
-  MotionHypergraph graph(world, task_space, 3);
-  HyperpathSearch search(graph);
-  SearchBudget budget;
-  budget.max_expansions = 5000;
-  SearchResult found;
-  for (int round = 0; round < 5 && found.status != SearchStatus::kFound; ++round) {
-    if (round > 0) graph.expand();
-    found = search.greedy(budget);
-  }
-  REQUIRE(found.status == SearchStatus::kFound);
-  std::map<std::string, Millis> placed_at;  // region -> start of its place
-  for (const ScheduledTransition& step : found.plan->steps) {
-    const TransitionSample& sample = graph.transition(step.transition).sample;
-    if (sample.kind != TransitionKind::kPlace) continue;
-    placed_at[world.world->regions[graph.sites().goal_region[sample.object]].name] = step.start;
-  }
-  REQUIRE(placed_at.size() == world.world->objects.size());
-  int pairs = 0;
-  for (const auto& [region, start] : placed_at) {
-    const auto front = region.find("_front");
-    if (front == std::string::npos) continue;
-    const std::string back = region.substr(0, front) + "_back";
-    if (placed_at.count(back) == 0) continue;
-    ++pairs;
-    CHECK(placed_at.at(back) < start);
-  }
-  CHECK(pairs == 2);
-}
-
-TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
-  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
-  const PlanResult greedy = solve(world, testSettings(Method::kGreedy));
-  PlannerSettings settings = testSettings(Method::kOptimal);
-  settings.search_expansions = 400;
-  settings.next_best_plans = 3;
-  const PlanResult optimal = solve(world, settings);
-  REQUIRE(greedy.status == PlannerStatus::kSolved);
-  REQUIRE(optimal.status == PlannerStatus::kSolved);
-  CHECK(optimal.stats.makespan <= greedy.stats.makespan);
 }
 
 TEST_CASE("the motion hypergraph's DOT shows its vertex map and transitions", "[planner][dash]") {

@@ -1,0 +1,63 @@
+// The DaSH planner's longer runs (label "long"): the shelving search with its scheduling
+// constraint, and MM-DaSH against greedy. Iteration caps, no wall-clock budgets.
+#include <catch2/catch.hpp>
+
+#include <map>
+#include <string>
+
+#include "core/world_loader.h"
+#include "planner/dash_planner.h"
+#include "planner/hyperpath_search.h"
+#include "tests/planner/dash_test_support.h"
+
+using namespace dashbed;
+using namespace dashbed::planner;
+using namespace dashbed::planner::testing;
+
+TEST_CASE("shelving task plans fill the back slot before the front slot in front of it", "[planner][dash][shelf]") {
+  // the scheduling constraint at the level of the hyperpath search: a place into a back slot
+  // touches the goal site of the object in front, so the front object waits
+  const core::LoadedWorld world = core::loadWorld(worldPath("shelf_2r_4o.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  RepresentationSettings settings;
+  settings.handoff_samples_per_round = 1;  // the tall items' handoffs are costly to sample
+  MotionHypergraph graph(world, task_space, 3, settings);
+  HyperpathSearch search(graph);
+  SearchBudget budget;
+  budget.max_expansions = 5000;
+  SearchResult found;
+  for (int round = 0; round < 5 && found.status != SearchStatus::kFound; ++round) {
+    if (round > 0) graph.expand();
+    found = search.greedy(budget);
+  }
+  REQUIRE(found.status == SearchStatus::kFound);
+  std::map<std::string, Millis> placed_at;  // region -> start of its place
+  for (const ScheduledTransition& step : found.plan->steps) {
+    const TransitionSample& sample = graph.transition(step.transition).sample;
+    if (sample.kind != TransitionKind::kPlace) continue;
+    placed_at[world.world->regions[graph.sites().goal_region[sample.object]].name] = step.start;
+  }
+  REQUIRE(placed_at.size() == world.world->objects.size());
+  int pairs = 0;
+  for (const auto& [region, start] : placed_at) {
+    const auto front = region.find("_front");
+    if (front == std::string::npos) continue;
+    const std::string back = region.substr(0, front) + "_back";
+    if (placed_at.count(back) == 0) continue;
+    ++pairs;
+    CHECK(placed_at.at(back) < start);
+  }
+  CHECK(pairs == 2);
+}
+
+TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const PlanResult greedy = solve(world, testSettings(Method::kGreedy));
+  PlannerSettings settings = testSettings(Method::kOptimal);
+  settings.search_expansions = 100;
+  settings.next_best_plans = 2;
+  const PlanResult optimal = solve(world, settings);
+  REQUIRE(greedy.status == PlannerStatus::kSolved);
+  REQUIRE(optimal.status == PlannerStatus::kSolved);
+  CHECK(optimal.stats.makespan <= greedy.stats.makespan);
+}
