@@ -29,7 +29,7 @@ constexpr int kObjectBit = 1 << 1;
 constexpr int robotBit(int r) { return 1 << (2 + r); }
 constexpr int kAllBits = -1;
 
-// Collision margin of every convex shape [m]. Bullet's default (4 cm) rounds boxes visibly;
+// Collision margin of convex shapes [m]. Bullet's default (4 cm) rounds boxes visibly;
 // 1 mm keeps the contact geometry within a millimetre of the true shapes while leaving
 // the GJK/EPA pair code a positive margin to work with.
 constexpr double kMargin = 0.001;
@@ -104,20 +104,33 @@ void computeInertia(const core::RobotModel& model, MergedBody& body) {
   body.inertia_diag = eig.eigenvalues().cwiseMax(1e-7);
 }
 
+// The margin of a shape whose smallest half-extent is `half` [m]: kMargin, but at most a
+// tenth of it. Bullet keeps a box's outer size and shrinks its core by the margin; a core
+// shrunk to nothing (the 2 mm finger pads at 1 mm) yields contact normals in arbitrary
+// directions, and those normals, kept by the persistent manifold for the whole grasp, locked
+// the fingers against opening.
+double marginFor(double half) { return std::min(kMargin, 0.1 * half); }
+
+std::unique_ptr<btBoxShape> boxShape(const Eigen::Vector3d& size) {
+  auto box = std::make_unique<btBoxShape>(toBt(size / 2));
+  box->setMargin(marginFor(size.minCoeff() / 2));
+  return box;
+}
+
 std::unique_ptr<btCollisionShape> makeShape(const core::CollisionShape& s) {
   std::unique_ptr<btCollisionShape> shape;
   switch (s.type) {
     case core::ShapeType::kBox:
-      shape = std::make_unique<btBoxShape>(toBt(s.size / 2));
-      break;
+      return boxShape(s.size);
     case core::ShapeType::kCylinder:
       shape = std::make_unique<btCylinderShapeZ>(btVector3(s.size.x(), s.size.y(), s.size.z() / 2));
+      shape->setMargin(marginFor(std::min(s.size.x(), s.size.z() / 2)));
       break;
     case core::ShapeType::kSphere:
       shape = std::make_unique<btSphereShape>(s.size.x());
+      shape->setMargin(marginFor(s.size.x()));
       break;
   }
-  shape->setMargin(kMargin);
   return shape;
 }
 
@@ -161,6 +174,32 @@ struct Simulation::Impl {
     shapes.push_back(std::move(shape));
     return shapes.back().get();
   }
+
+  // Bullet keeps a friction-anchored contact point while its friction stays inside the cone
+  // (so a static contact does not creep), with its local points fixed but its normal and
+  // friction directions stored in world coordinates. A grasped box that turns with the hand
+  // kept the normals of the moment it was grasped: after a quarter turn they pointed along
+  // the pads, and those rows held the fingers shut when the gripper opened. Turning them with
+  // body B keeps them fixed in B's frame, as the points are.
+  std::vector<btMatrix3x3> last_basis;  // per collision object (user index), at the last step
+
+  void turnAnchoredContacts() {
+    last_basis.resize(refs.size(), btMatrix3x3::getIdentity());
+    for (int m = 0; m < dispatcher.getNumManifolds(); ++m) {
+      btPersistentManifold* manifold = dispatcher.getManifoldByIndexInternal(m);
+      const btCollisionObject* b = manifold->getBody1();
+      const btMatrix3x3 turn = b->getWorldTransform().getBasis() * last_basis[b->getUserIndex()].transpose();
+      for (int p = 0; p < manifold->getNumContacts(); ++p) {
+        btManifoldPoint& point = manifold->getContactPoint(p);
+        if ((point.m_contactPointFlags & BT_CONTACT_FLAG_FRICTION_ANCHOR) == 0) continue;
+        point.m_normalWorldOnB = turn * point.m_normalWorldOnB;
+        point.m_lateralFrictionDir1 = turn * point.m_lateralFrictionDir1;
+        point.m_lateralFrictionDir2 = turn * point.m_lateralFrictionDir2;
+      }
+    }
+    const btCollisionObjectArray& all = world.getCollisionObjectArray();
+    for (int i = 0; i < all.size(); ++i) last_basis[all[i]->getUserIndex()] = all[i]->getWorldTransform().getBasis();
+  }
 };
 
 Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
@@ -179,8 +218,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
   // floor at z = 0: a large thin box rather than a plane, whose infinite bounds would pair it
   // with every robot link in the broadphase
   {
-    btCollisionShape* floor = s.own(std::make_unique<btBoxShape>(btVector3(10.0, 10.0, 0.05)));
-    floor->setMargin(kMargin);
+    btCollisionShape* floor = s.own(boxShape(Eigen::Vector3d(20.0, 20.0, 0.1)));
     auto body = std::make_unique<btRigidBody>(0.0, nullptr, floor);
     body->setWorldTransform(btTransform(btMatrix3x3::getIdentity(), btVector3(0, 0, -0.05)));
     body->setFriction(world.physics.fixture_friction);
@@ -195,14 +233,12 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
     btCollisionShape* shape = nullptr;
     btTransform X_WS = btTransform::getIdentity();
     if (fixture.boxes.size() == 1) {
-      shape = s.own(std::make_unique<btBoxShape>(toBt(fixture.boxes[0].size / 2)));
-      shape->setMargin(kMargin);
+      shape = s.own(boxShape(fixture.boxes[0].size));
       X_WS = toBt(fixture.boxes[0].X_WB);
     } else {
       auto* compound = static_cast<btCompoundShape*>(s.own(std::make_unique<btCompoundShape>()));
       for (const core::Box& box : fixture.boxes) {
-        btCollisionShape* child = s.own(std::make_unique<btBoxShape>(toBt(box.size / 2)));
-        child->setMargin(kMargin);
+        btCollisionShape* child = s.own(boxShape(box.size));
         compound->addChildShape(toBt(box.X_WB), child);
       }
       shape = compound;
@@ -218,8 +254,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
   // objects: dynamic boxes that never sleep
   for (std::size_t o = 0; o < world.objects.size(); ++o) {
     const core::ObjectSpec& spec = world.objects[o];
-    btCollisionShape* box = s.own(std::make_unique<btBoxShape>(toBt(spec.size / 2)));
-    box->setMargin(kMargin);
+    btCollisionShape* box = s.own(boxShape(spec.size));
     btVector3 inertia;
     box->calculateLocalInertia(spec.mass, inertia);
     Impl::Object object;
@@ -382,6 +417,7 @@ Simulation::~Simulation() {
 }
 
 void Simulation::step() {
+  impl_->turnAnchoredContacts();
   impl_->world.stepSimulation(time_step_, 0, time_step_);
   time_ += time_step_;
 }
