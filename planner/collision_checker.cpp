@@ -147,6 +147,7 @@ struct ObjectData {
 
 struct StaticData {
   std::vector<core::Box> boxes;
+  std::vector<int> owner;     // the robot whose pedestal a box is, or -1
   std::vector<Frame> frames;  // the boxes' poses
   std::vector<Vector3d> half;
   std::vector<double> radius;
@@ -597,11 +598,12 @@ struct CheckerState {
   bool staticCollision(Slot& slot) {
     const RobotData& robot = *slot.robot;
     const StaticData& statics = scene->statics;
+    const int self = static_cast<int>(slot.robot - scene->robots.data());
     for (int b : robot.static_order) {
       const Body& body = robot.bodies[b];
       const Vector3d& c = slot.c_WB[b];
       const bool hit = forStaticNear(c, body.radius, [&](int k) {
-        if (sphereObbApart(c, body.radius, statics.frames[k], statics.half[k])) return false;
+        if (statics.owner[k] == self || sphereObbApart(c, body.radius, statics.frames[k], statics.half[k])) return false;
         const Placed fixture = placedStatic(k);
         for (int s = body.shape_begin; s < body.shape_end; ++s) {
           if (shapesCollide(placedShape(slot, s), fixture)) return true;
@@ -613,7 +615,7 @@ struct CheckerState {
     if (slot.holding && slot.held_static) {
       const Placed held = placedHeld(slot);
       const bool hit = forStaticNear(slot.X_WH.p, held.radius,
-                                     [&](int k) { return shapesCollide(held, placedStatic(k)); });
+                                     [&](int k) { return statics.owner[k] != self && shapesCollide(held, placedStatic(k)); });
       if (hit) return true;
     }
     return false;
@@ -901,6 +903,39 @@ RobotData buildRobot(const core::PlacedRobot& placed, double margin) {
   return robot;
 }
 
+/// Boxes around what of a robot no joint moves (its base) and around what a vertical revolute
+/// joint on it sweeps (a UR shoulder turning on its base): the robot's pedestal, which the other
+/// robots treat as static geometry. A cylinder coaxial with that joint keeps its radius.
+std::vector<core::Box> pedestalBoxes(const detail::RobotData& robot) {
+  std::vector<core::Box> boxes;
+  for (const detail::Body& body : robot.bodies) {
+    if (body.parent >= 0 && (robot.bodies[body.parent].moves || body.joint_type != core::JointType::kRevolute)) continue;
+    const detail::Frame X_WJ = body.parent < 0 ? robot.X_WBase : robot.X_WBase * body.X_PJ;  // the root's parent is the base
+    const Vector3d axis_W = X_WJ.R * body.axis;
+    if (body.parent >= 0 && std::abs(axis_W.z()) < 1.0 - 1e-9) continue;
+    for (int s = body.shape_begin; s < body.shape_end; ++s) {
+      const detail::Shape& shape = robot.shapes[s];
+      core::Box box;
+      if (body.parent < 0) {
+        box.X_WB = (X_WJ * shape.X_BS).pose();
+        box.size = 2.0 * shape.half;
+      } else {
+        const double along = shape.X_BS.p.dot(body.axis);
+        const double radial = (shape.X_BS.p - along * body.axis).norm();
+        const bool coaxial = shape.type == ShapeType::kCylinder && std::abs(shape.X_BS.R.col(2).dot(body.axis)) > 1.0 - 1e-9;
+        const double r = radial + (coaxial ? shape.half.x() : shape.radius);
+        const double h = coaxial ? shape.half.z() : shape.radius;
+        box.X_WB = Pose::Identity();
+        box.X_WB.translation() = X_WJ * (along * body.axis);
+        box.size = Vector3d(2.0 * r, 2.0 * r, 2.0 * h);
+      }
+      boxes.push_back(box);
+    }
+  }
+  return boxes;
+}
+
+
 }  // namespace
 
 namespace {
@@ -1028,7 +1063,15 @@ CollisionScene::CollisionScene(const core::World& world, const core::RobotSet& r
   data.settings = settings;
   data.robot_set = &robots;
 
-  // static geometry: the fixtures' boxes and the floor, in FCL's dynamic AABB tree
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    data.robots.push_back(buildRobot(robots[r], settings.margin));
+  }
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    computeSelfPairs(data, data.robots[r], *robots[r].spec);
+  }
+
+  // static geometry in FCL's dynamic AABB tree: the fixtures' boxes, the floor, and each
+  // robot's pedestal (static for the other robots)
   detail::StaticData& statics = data.statics;
   for (const core::FixtureSpec& fixture : world.fixtures) {
     statics.boxes.insert(statics.boxes.end(), fixture.boxes.begin(), fixture.boxes.end());
@@ -1038,6 +1081,13 @@ CollisionScene::CollisionScene(const core::World& world, const core::RobotSet& r
   floor.X_WB.translation() = Vector3d(0.0, 0.0, -detail::kFloorThickness / 2.0);
   floor.size = Vector3d(detail::kFloorExtent, detail::kFloorExtent, detail::kFloorThickness);
   statics.boxes.push_back(floor);
+  statics.owner.assign(statics.boxes.size(), -1);
+  for (std::size_t r = 0; r < data.robots.size(); ++r) {
+    for (const core::Box& box : pedestalBoxes(data.robots[r])) {
+      statics.boxes.push_back(box);
+      statics.owner.push_back(static_cast<int>(r));
+    }
+  }
   for (std::size_t k = 0; k < statics.boxes.size(); ++k) {
     const core::Box& box = statics.boxes[k];
     statics.frames.emplace_back(box.X_WB);
@@ -1060,13 +1110,6 @@ CollisionScene::CollisionScene(const core::World& world, const core::RobotSet& r
     object.box = std::make_shared<fcl::Boxd>(2.0 * object.half);
     object.box_grown = std::make_shared<fcl::Boxd>(2.0 * object.half_grown);
     data.objects.push_back(std::move(object));
-  }
-
-  for (std::size_t r = 0; r < robots.size(); ++r) {
-    data.robots.push_back(buildRobot(robots[r], settings.margin));
-  }
-  for (std::size_t r = 0; r < robots.size(); ++r) {
-    computeSelfPairs(data, data.robots[r], *robots[r].spec);
   }
 }
 

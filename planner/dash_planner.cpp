@@ -115,7 +115,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   }
 
   const SearchBudget search_budget{settings.search_expansions, time_up};
-  const ConflictResolutionBudget conflict_budget{settings.conflict_nodes, time_up};
+  ConflictResolutionBudget conflict_budget;
+  conflict_budget.max_nodes = settings.conflict_nodes;
+  conflict_budget.stop = time_up;
   std::optional<TransitionHistory> best_history;
   std::optional<Schedule> best_schedule;
   Millis best = std::numeric_limits<Millis>::max();

@@ -210,30 +210,67 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
     grown += settings_.move_growth_samples;
     path = map.query(a, b, occupied);
   }
-  if (path) {
-    Move m;
-    m.robot = robot;
-    m.object = object;
-    m.grasp = grasp;
-    m.duration = polylineDuration(*path, timing_);
-    // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile
-    m.touches = SiteSet(sites_.numSites());
-    for (int s = 0; s < sites_.numSites(); ++s) {
-      if (occupied_bits[s] || !sites_.site(s) || s / 2 == object) continue;
-      SiteSet only(sites_.numSites());
-      only.set(s);
-      for (std::size_t i = 1; i < path->size(); ++i) {
-        if (!map.motionFree((*path)[i - 1], (*path)[i], only)) {
-          m.touches.set(s);
-          break;
-        }
-      }
-    }
-    m.path = std::move(*path);
-    result = std::move(m);
-  }
+  if (path) result = makeMove(robot, object, grasp, std::move(*path), occupied);
   const auto it = moves_.emplace(key, std::move(result)).first;
   return it->second ? &*it->second : nullptr;
+}
+
+Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<core::ArmConfig> path,
+                                const SiteSet& occupied) {
+  Roadmap& map = roadmap(robot, object, grasp);
+  Move m;
+  m.robot = robot;
+  m.object = object;
+  m.grasp = grasp;
+  m.duration = polylineDuration(path, timing_);
+  m.occupied = occupied;
+  // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile
+  m.touches = SiteSet(sites_.numSites());
+  for (int s = 0; s < sites_.numSites(); ++s) {
+    if (occupied.test(s) || !sites_.site(s) || s / 2 == object) continue;
+    SiteSet only(sites_.numSites());
+    only.set(s);
+    for (std::size_t i = 1; i < path.size(); ++i) {
+      if (!map.motionFree(path[i - 1], path[i], only)) {
+        m.touches.set(s);
+        break;
+      }
+    }
+  }
+  m.path = std::move(path);
+  return m;
+}
+
+const Move* MotionHypergraph::detour(const Move& original, const Roadmap::MotionFilter& clear) {
+  Roadmap& map = roadmap(original.robot, original.object, original.grasp);
+  const int a = map.addConfiguration(original.path.front()), b = map.addConfiguration(original.path.back());
+  if (a < 0 || b < 0 || a == b) return nullptr;
+  std::optional<std::vector<core::ArmConfig>> path = map.query(a, b, original.occupied, clear);
+  if (!path) return nullptr;
+  detours_.push_back(makeMove(original.robot, original.object, original.grasp, std::move(*path), original.occupied));
+  return &detours_.back();
+}
+
+std::optional<std::pair<const Move*, const Move*>> MotionHypergraph::parking(
+    const Move& original, const std::function<bool(const core::ArmConfig&)>& clear, int attempts) {
+  const core::ArmConfig& from = original.path.front();
+  const core::ArmConfig& to = original.path.back();
+  Roadmap& map = roadmap(original.robot, original.object, original.grasp);
+  std::vector<std::pair<Millis, int>> candidates;  // (detour time, node), ties by node id
+  for (int id = 0; id < map.numNodes(); ++id) {
+    const core::ArmConfig& q = map.node(id);
+    if (q == from || q == to || !clear(q)) continue;
+    candidates.emplace_back(restToRestDuration(from, q, timing_) + restToRestDuration(q, to, timing_), id);
+  }
+  std::sort(candidates.begin(), candidates.end());
+  if (candidates.size() > static_cast<std::size_t>(attempts)) candidates.resize(static_cast<std::size_t>(attempts));
+  for (const auto& [time, id] : candidates) {
+    const core::ArmConfig q = map.node(id);  // a copy: move() may add nodes
+    const Move* there = move(original.robot, original.object, original.grasp, from, q, original.occupied);
+    const Move* back = there ? move(original.robot, original.object, original.grasp, q, to, original.occupied) : nullptr;
+    if (back) return std::pair{there, back};
+  }
+  return std::nullopt;
 }
 
 int MotionHypergraph::expand() {

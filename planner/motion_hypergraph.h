@@ -28,6 +28,7 @@
 
 #include <cstdint>
 #include <deque>
+#include <functional>
 #include <map>
 #include <memory>
 #include <optional>
@@ -84,7 +85,8 @@ struct Move {
   int grasp = -1;
   std::vector<core::ArmConfig> path;  ///< both ends included; one point when already there
   Millis duration = 0;
-  SiteSet touches;  ///< object sites the path would touch (all of them unoccupied when planned)
+  SiteSet touches;   ///< object sites the path would touch (all of them unoccupied when planned)
+  SiteSet occupied;  ///< object sites it was planned around
 };
 
 class MotionHypergraph {
@@ -121,6 +123,20 @@ class MotionHypergraph {
   const Move* move(int robot, int object, int grasp, const core::ArmConfig& from, const core::ArmConfig& to,
                    const SiteSet& occupied);
 
+  /// `original` planned again on its roadmap, with every straight piece also passing `clear`
+  /// (conflict resolution's detour around other robots), or nullptr when the roadmap has no
+  /// such path. Not cached; the pointer stays valid for the hypergraph's life.
+  const Move* detour(const Move& original, const Roadmap::MotionFilter& clear);
+
+  /// `original` split at a parking configuration: a node of its roadmap passing `clear` (out
+  /// of another robot's way), reached by a first move from the start and left by a second one
+  /// to the end (both as move() plans them). Of the nodes passing `clear`, the `attempts` with
+  /// the shortest detour (start -> node -> end, rest-to-rest time) are tried in that order;
+  /// std::nullopt when none works.
+  std::optional<std::pair<const Move*, const Move*>> parking(const Move& original,
+                                                             const std::function<bool(const core::ArmConfig&)>& clear,
+                                                             int attempts = 5);
+
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
   /// growth. Returns the number of the round just completed (the first is 1).
   int expand();
@@ -152,6 +168,7 @@ class MotionHypergraph {
   void addTransition(TransitionSample sample);
   void sampleHandoffs(int hyperarc, int grasp, int round);
   Roadmap& roadmap(int robot, int object, int grasp);
+  Move makeMove(int robot, int object, int grasp, std::vector<core::ArmConfig> path, const SiteSet& occupied);
 
   const core::LoadedWorld* world_;
   const TaskSpaceHypergraph* task_space_;
@@ -172,6 +189,7 @@ class MotionHypergraph {
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
   std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
+  std::deque<Move> detours_;  // made by detour()
   std::vector<int> source_, target_;
 };
 

@@ -12,6 +12,13 @@
 #include <utility>
 
 namespace dashbed::planner {
+namespace {
+
+// A filtered query gives up after this many edges the filter rejected: far detours are not
+// worth their cost, and the caller has other remedies.
+constexpr int kMaxRejections = 25;
+
+}  // namespace
 
 // ================================================================================================
 // SiteSet
@@ -235,9 +242,11 @@ struct Roadmap::Impl {
     return id;
   }
 
-  /// A* from `from` to `to` over the edges not known to be blocked (statically or by an
-  /// occupied site); heuristic: the metric to `to`. Returns the path's edge ids, in order.
-  std::optional<std::vector<int>> search(int from, int to, const SiteSet& occupied) const {
+  /// A* from `from` to `to` over the edges not known to be blocked (statically, by an
+  /// occupied site, or `blocked` by the query's filter); heuristic: the metric to `to`.
+  /// Returns the path's edge ids, in order.
+  std::optional<std::vector<int>> search(int from, int to, const SiteSet& occupied,
+                                         const std::vector<char>& blocked) const {
     const double inf = std::numeric_limits<double>::infinity();
     std::vector<double> cost(nodes.size(), inf);
     std::vector<int> via(nodes.size(), -1);  // edge reaching the node on the best path
@@ -254,7 +263,7 @@ struct Roadmap::Impl {
       if (u == to) break;
       for (const int e : incident[u]) {
         const Edge& edge = edges[e];
-        if (edge.check && !usable(*edge.check, occupied)) continue;
+        if ((edge.check && !usable(*edge.check, occupied)) || blocked[e]) continue;
         const int v = edge.a == u ? edge.b : edge.a;
         const double c = cost[u] + edge.cost;
         if (closed[v] || c >= cost[v]) continue;
@@ -279,7 +288,11 @@ struct Roadmap::Impl {
   /// two stubs left of the old pieces are checked as well, so that every piece of the result
   /// passes motionFree on its own (a piece of a checked motion is sampled at other points).
   /// The draws come from a generator seeded with the roadmap's seed and the query's nodes.
-  void shortcut(std::vector<core::ArmConfig>& path, int from, int to, const SiteSet& occupied) {
+  void shortcut(std::vector<core::ArmConfig>& path, int from, int to, const SiteSet& occupied,
+                const Roadmap::MotionFilter& clear) {
+    const auto free = [&](const core::ArmConfig& a, const core::ArmConfig& b) {
+      return motionFree(a, b, occupied) && (!clear || clear(a, b));
+    };
     std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                       static_cast<std::uint32_t>(from), static_cast<std::uint32_t>(to)};
     std::mt19937_64 draw(seq);
@@ -303,8 +316,7 @@ struct Roadmap::Impl {
       const core::ArmConfig a = point(i, t0), b = point(j, t1);
       if (t1 - t0 - distance(a, b) <= 1e-9) continue;  // no shorter
       const bool keep_a = a != path[i], keep_b = b != path[j + 1];
-      if (!motionFree(a, b, occupied) || (keep_a && !motionFree(path[i], a, occupied)) ||
-          (keep_b && !motionFree(b, path[j + 1], occupied))) {
+      if (!free(a, b) || (keep_a && !free(path[i], a)) || (keep_b && !free(b, path[j + 1]))) {
         continue;
       }
       std::vector<core::ArmConfig> shorter(path.begin(), path.begin() + static_cast<std::ptrdiff_t>(i) + 1);
@@ -317,16 +329,26 @@ struct Roadmap::Impl {
 
   /// The direct motion if usable; else lazy A*: search, validate the found path's edges in
   /// order, and search again after the first one that fails, until a path holds or none is left.
-  std::optional<std::vector<core::ArmConfig>> query(int from, int to, const SiteSet& occupied) {
-    if (usable(pairCheck(from, to), occupied)) {
+  /// Edges `clear` rejects are blocked for this query only.
+  std::optional<std::vector<core::ArmConfig>> query(int from, int to, const SiteSet& occupied,
+                                                    const Roadmap::MotionFilter& clear) {
+    const auto passes = [&](int u, int v) { return !clear || clear(nodes[u], nodes[v]); };
+    if (usable(pairCheck(from, to), occupied) && passes(from, to)) {
       if (from == to) return std::vector<core::ArmConfig>{nodes[from]};
       return std::vector<core::ArmConfig>{nodes[from], nodes[to]};
     }
-    while (true) {
-      const std::optional<std::vector<int>> found = search(from, to, occupied);
+    std::vector<char> blocked(edges.size(), 0);
+    int rejected = 0;
+    while (rejected <= kMaxRejections) {
+      const std::optional<std::vector<int>> found = search(from, to, occupied, blocked);
       if (!found) return std::nullopt;
-      const bool holds = std::all_of(found->begin(), found->end(),
-                                     [&](int e) { return usable(edgeCheck(e), occupied); });
+      const bool holds = std::all_of(found->begin(), found->end(), [&](int e) {
+        if (!usable(edgeCheck(e), occupied)) return false;
+        if (passes(edges[e].a, edges[e].b)) return true;
+        blocked[e] = 1;
+        ++rejected;
+        return false;
+      });
       if (!holds) continue;
       std::vector<core::ArmConfig> path{nodes[from]};
       int at = from;
@@ -334,9 +356,10 @@ struct Roadmap::Impl {
         at = edges[e].a == at ? edges[e].b : edges[e].a;
         path.push_back(nodes[at]);
       }
-      shortcut(path, from, to, occupied);
+      shortcut(path, from, to, occupied, clear);
       return path;
     }
+    return std::nullopt;
   }
 
   void requireNode(int id, const char* what) const {
@@ -380,7 +403,14 @@ int Roadmap::addConfiguration(const core::ArmConfig& q) {
 std::optional<std::vector<core::ArmConfig>> Roadmap::query(int from, int to, const SiteSet& occupied) {
   impl_->requireNode(from, "query start");
   impl_->requireNode(to, "query goal");
-  return impl_->query(from, to, occupied);
+  return impl_->query(from, to, occupied, {});
+}
+
+std::optional<std::vector<core::ArmConfig>> Roadmap::query(int from, int to, const SiteSet& occupied,
+                                                           const MotionFilter& clear) {
+  impl_->requireNode(from, "query start");
+  impl_->requireNode(to, "query goal");
+  return impl_->query(from, to, occupied, clear);
 }
 
 bool Roadmap::motionFree(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& occupied) {

@@ -18,6 +18,7 @@
 
 #include <array>
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <vector>
@@ -70,6 +71,16 @@ class Roadmap {
   /// shortcut (seeded, deterministic); std::nullopt when the roadmap does not connect them.
   /// The direct straight motion is tried first. One waypoint when from == to.
   std::optional<std::vector<core::ArmConfig>> query(int from, int to, const SiteSet& occupied);
+
+  /// An extra condition on straight motions, true when a -> b is clear of something the
+  /// roadmap does not know (e.g. another robot standing in the way).
+  using MotionFilter = std::function<bool(const core::ArmConfig& a, const core::ArmConfig& b)>;
+
+  /// query() using only motions that also pass `clear`. What `clear` rejects is forgotten after
+  /// the call; the static checks it causes are cached as usual. Gives up (std::nullopt) after
+  /// 25 edges rejected by `clear`.
+  std::optional<std::vector<core::ArmConfig>> query(int from, int to, const SiteSet& occupied,
+                                                    const MotionFilter& clear);
 
   /// True when the straight motion a -> b is free against the static scene and touches none of
   /// the `occupied` sites.

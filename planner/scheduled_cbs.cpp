@@ -14,6 +14,10 @@ constexpr double kFingersOpen = 0.025;   // [m] a robot alone keeps its gripper 
 constexpr Millis kGridStep = 20;         // [ms] extra check times between key times
 constexpr double kStepHeadroom = 1.5;    // speed variation within a grid interval
 constexpr double kFarApart = 2.6;        // [m] bases farther apart than twice the reach + tool: never touch
+constexpr Millis kObstacleStep = 100;    // [ms] how often the other robot is sampled for a detour
+constexpr std::size_t kMaxObstacles = 30;  // more distinct states than this for a detour: the
+                                           // other robot is moving through, ordering is the remedy
+constexpr std::size_t kMaxParkingObstacles = 120;  // a parking is checked per configuration only
 
 /// A precedence S[to] >= S[from] + lag.
 struct Edge {
@@ -21,6 +25,45 @@ struct Edge {
   Millis lag = 0;
   bool operator==(const Edge&) const = default;
 };
+
+/// A scheduling constraint of the high level: a point of segment `from` (its start, or its end)
+/// comes no later than a point of segment `to`. Kept symbolic, as detours change durations.
+struct Precedence {
+  int from = -1;
+  bool from_end = false;
+  int to = -1;
+  bool to_end = false;
+  bool operator==(const Precedence&) const = default;
+};
+
+Edge edgeOf(const Precedence& p, const std::vector<ScheduleSegment>& segments) {
+  return {p.from, p.to, (p.from_end ? segments[p.from].duration : 0) - (p.to_end ? segments[p.to].duration : 0)};
+}
+
+/// Another robot's configuration (with its fingers) and held object, for a detour to avoid.
+struct Obstacle {
+  int robot = -1;
+  Eigen::VectorXd q;
+  std::optional<HeldObject> held;
+  bool operator==(const Obstacle& o) const {
+    return robot == o.robot && q == o.q && held.has_value() == o.held.has_value() &&
+           (!held || (held->object == o.held->object && held->X_TO.isApprox(o.held->X_TO, 0.0)));
+  }
+};
+
+/// The low level's constraint: move segment `segment` takes a path on its roadmap that keeps
+/// clear of `avoid` (the other robot where it stood or passed during the segment).
+struct DetourConstraint {
+  int segment = -1;
+  const Move* original = nullptr;  ///< the move planned without them
+  std::vector<Obstacle> avoid;
+};
+
+/// The segment list with segment k replaced by two (k and k + 1): indices after k shift by one,
+/// and a reference to the end of k now means the end of the second.
+void splitIndex(int k, int& segment, bool at_end) {
+  if (segment > k || (segment == k && at_end)) ++segment;
+}
 
 /// Local times of the points of a segment (path waypoints or transition keys) [ms].
 std::vector<Millis> pointTimes(const ScheduleSegment& seg, const TimingLimits& limits) {
@@ -249,32 +292,41 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
 
 /// The precedence "item a of robot ra ends before item b of robot rb starts", or std::nullopt
 /// when impossible (an item standing still forever, or from time 0).
-std::optional<Edge> precedence(const ScheduleView& view, const std::vector<ScheduleSegment>& segments, int ra,
-                               int item_a, int rb, int item_b) {
+std::optional<Precedence> precedence(const ScheduleView& view, int ra, int item_a, int rb, int item_b) {
   const Timeline& a = view.timeline(ra);
   const Timeline& b = view.timeline(rb);
-  Edge edge;
-  // end(A) = S[from] + lag_a
-  Millis lag = 0;
-  if (item_a >= 0) {
-    edge.from = a.segments[item_a];
-    lag = segments[edge.from].duration;
-  } else {
-    const int k = -1 - item_a;  // standing still until segment k starts
+  Precedence p;
+  if (item_a >= 0) {  // the end of segment A
+    p.from = a.segments[item_a];
+    p.from_end = true;
+  } else {  // standing still until segment k starts
+    const int k = -1 - item_a;
     if (k >= static_cast<int>(a.segments.size())) return std::nullopt;
-    edge.from = a.segments[k];
+    p.from = a.segments[k];
   }
-  // start(B) = S[to] (+ duration of the segment before a standstill)
-  if (item_b >= 0) {
-    edge.to = b.segments[item_b];
-  } else {
-    const int k = -1 - item_b;  // standing still after segment k - 1
+  if (item_b >= 0) {  // the start of segment B
+    p.to = b.segments[item_b];
+  } else {  // standing still from the end of segment k - 1
+    const int k = -1 - item_b;
     if (k == 0) return std::nullopt;
-    edge.to = b.segments[k - 1];
-    lag -= segments[edge.to].duration;
+    p.to = b.segments[k - 1];
+    p.to_end = true;
   }
-  edge.lag = lag;
-  return edge;
+  return p;
+}
+
+/// Where `other` stands or passes while segment `segment` of the schedule runs, sampled every
+/// kObstacleStep (ends included), distinct states only.
+std::vector<Obstacle> obstaclesDuring(const ScheduleView& view, const Schedule& schedule, int segment, int other) {
+  const Millis t0 = schedule.start[segment], t1 = t0 + schedule.segments[segment].duration;
+  std::vector<Obstacle> states;
+  for (Millis t = t0;; t = std::min(t + kObstacleStep, t1)) {
+    const RobotState state = view.at(other, toSeconds(t), true);
+    Obstacle o{other, view.full(state), state.held};
+    if (std::find(states.begin(), states.end(), o) == states.end()) states.push_back(std::move(o));
+    if (t == t1) break;
+  }
+  return states;
 }
 
 std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
@@ -286,7 +338,7 @@ std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
 
 }  // namespace
 
-std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule) {
+std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
   const ScheduleView view(graph, schedule);
   const CollisionScene& scene = graph.scene();
   CollisionChecker checker(scene);
@@ -313,6 +365,7 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
       for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
         const double t0 = toSeconds(grid[i]), t1 = toSeconds(grid[i + 1]);
         if (first && t0 > first->t) break;
+        if (t1 <= from) continue;
         const RobotState a0 = view.at(a, t0, true), b0 = view.at(b, t0, true);
         // a handoff's two robots were checked against each other when it was sampled
         const auto in_step = [&](int r, const RobotState& s) {
@@ -350,34 +403,134 @@ RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule
   return {view.full(state), state.held};
 }
 
+/// The earliest time [s] at which some robot does something else in `b` than in `a`: up to
+/// then a child's schedule repeats its parent's, which was checked free before its conflict.
+double firstDifference(const Schedule& a, const Schedule& b, int robots) {
+  double t = std::numeric_limits<double>::infinity();
+  for (int r = 0; r < robots; ++r) {
+    std::vector<std::size_t> in_a, in_b;
+    for (std::size_t s = 0; s < a.segments.size(); ++s) {
+      if (a.segments[s].robot == r) in_a.push_back(s);
+    }
+    for (std::size_t s = 0; s < b.segments.size(); ++s) {
+      if (b.segments[s].robot == r) in_b.push_back(s);
+    }
+    for (std::size_t k = 0; k < std::max(in_a.size(), in_b.size()); ++k) {
+      if (k >= in_a.size() || k >= in_b.size()) {
+        t = std::min(t, toSeconds(k < in_a.size() ? a.start[in_a[k]] : b.start[in_b[k]]));
+        break;
+      }
+      const ScheduleSegment& x = a.segments[in_a[k]];
+      const ScheduleSegment& y = b.segments[in_b[k]];
+      const Millis sx = a.start[in_a[k]], sy = b.start[in_b[k]];
+      if (sx != sy || x.move != y.move || x.motion != y.motion || x.duration != y.duration) {
+        t = std::min(t, toSeconds(std::min(sx, sy)));
+        break;
+      }
+    }
+  }
+  return t;
+}
+
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
                                 const ConflictResolutionBudget& budget) {
   ConflictResult result;
-  Schedule base;
-  base.segments = segmentsOf(graph, history);
-  const std::vector<Edge> base_edges = baseConstraints(graph, history, base.segments);
+  const std::vector<ScheduleSegment> base = segmentsOf(graph, history);
+  CollisionChecker checker(graph.scene());
+  const int robots = static_cast<int>(graph.world().world->robots.size());
 
   struct Node {
-    std::vector<Edge> extra;
-    std::vector<Millis> start;
-    Millis makespan = 0;
+    std::vector<Precedence> extra;
+    std::vector<DetourConstraint> detours;
+    int parkings = 0;
+    Schedule schedule;
     std::uint64_t order = 0;
+    double clear_until = 0.0;  ///< [s] no conflict before this time
+    std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
   };
   const auto worse = [](const Node& x, const Node& y) {
-    return std::make_tuple(x.makespan, x.extra.size(), x.order) > std::make_tuple(y.makespan, y.extra.size(), y.order);
+    return std::make_tuple(x.schedule.makespan, x.constraints(), x.order) >
+           std::make_tuple(y.schedule.makespan, y.constraints(), y.order);
   };
   std::priority_queue<Node, std::vector<Node>, decltype(worse)> open(worse);
   std::uint64_t created = 0;
-  const auto make = [&](std::vector<Edge> extra) -> std::optional<Node> {
-    std::vector<Edge> edges = base_edges;
-    edges.insert(edges.end(), extra.begin(), extra.end());
-    std::optional<std::vector<Millis>> start = earliestStarts(base.segments.size(), edges);
+  // a node: its segments at the earliest times their temporal network allows
+  const auto make = [&](std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
+                        std::vector<DetourConstraint> detours, int parkings) -> std::optional<Node> {
+    std::vector<Edge> edges = baseConstraints(graph, history, segments);
+    for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
+    std::optional<std::vector<Millis>> start = earliestStarts(segments.size(), edges);
     if (!start) return std::nullopt;
-    Schedule s = base;
-    s.start = *start;
-    return Node{std::move(extra), std::move(*start), makespanOf(s), created++};
+    Schedule schedule;
+    schedule.segments = std::move(segments);
+    schedule.start = std::move(*start);
+    schedule.makespan = makespanOf(schedule);
+    return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++};
   };
-  if (std::optional<Node> root = make({})) {
+  const auto full = [](const core::ArmConfig& q, double finger) {
+    Eigen::VectorXd f(8);
+    for (int j = 0; j < 6; ++j) f[j] = q[j];
+    f[6] = f[7] = finger;
+    return f;
+  };
+  // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
+  const auto detoured = [&](const Node& node, int segment, std::vector<Obstacle> avoid) -> std::optional<Node> {
+    const ScheduleSegment& seg = node.schedule.segments[segment];
+    std::vector<DetourConstraint> detours = node.detours;
+    auto it = std::find_if(detours.begin(), detours.end(), [&](const DetourConstraint& d) { return d.segment == segment; });
+    if (it == detours.end()) it = detours.insert(detours.end(), DetourConstraint{segment, seg.move, {}});
+    const std::size_t known = it->avoid.size();
+    for (Obstacle& o : avoid) {
+      if (std::find(it->avoid.begin(), it->avoid.end(), o) == it->avoid.end()) it->avoid.push_back(std::move(o));
+    }
+    if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
+    const std::vector<Obstacle>& obstacles = it->avoid;
+    const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
+      const Eigen::VectorXd qa = full(a, seg.finger), qb = full(b, seg.finger);
+      return std::all_of(obstacles.begin(), obstacles.end(), [&](const Obstacle& o) {
+        return checker.motionsFree(seg.robot, qa, qb, seg.held, o.robot, o.q, o.q, o.held);
+      });
+    });
+    if (move == nullptr) return std::nullopt;
+    std::vector<ScheduleSegment> segments = node.schedule.segments;
+    segments[segment].move = move;
+    segments[segment].duration = move->duration;
+    return make(std::move(segments), node.extra, std::move(detours), node.parkings);
+  };
+  // the child where the robot, instead of standing where move `segment` starts, goes early to a
+  // configuration clear of `avoid` and waits there: the move split in two at that parking
+  const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid) -> std::optional<Node> {
+    const ScheduleSegment& seg = node.schedule.segments[segment];
+    if (avoid.size() > kMaxParkingObstacles) return std::nullopt;
+    const auto split = graph.parking(*seg.move, [&](const core::ArmConfig& q) {
+      const Eigen::VectorXd f = full(q, seg.finger);
+      return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
+        return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
+      });
+    });
+    if (!split) return std::nullopt;
+    std::vector<ScheduleSegment> segments = node.schedule.segments;
+    ScheduleSegment second = segments[segment];
+    segments[segment].move = split->first;
+    segments[segment].duration = split->first->duration;
+    second.move = split->second;
+    second.duration = split->second->duration;
+    segments.insert(segments.begin() + segment + 1, second);
+    std::vector<Precedence> extra = node.extra;
+    for (Precedence& p : extra) {
+      splitIndex(segment, p.from, p.from_end);
+      splitIndex(segment, p.to, p.to_end);
+    }
+    std::vector<DetourConstraint> detours;
+    for (DetourConstraint d : node.detours) {
+      if (d.segment == segment) continue;  // that move is replaced
+      splitIndex(segment, d.segment, false);
+      detours.push_back(std::move(d));
+    }
+    return make(std::move(segments), std::move(extra), std::move(detours), node.parkings + 1);
+  };
+
+  if (std::optional<Node> root = make(base, {}, {}, 0)) {
     open.push(std::move(*root));
   } else {
     result.reason = "the schedule's own precedences contradict each other";
@@ -391,26 +544,59 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     Node node = open.top();
     open.pop();
     ++result.nodes;
-    Schedule schedule = base;
-    schedule.start = node.start;
-    schedule.makespan = node.makespan;
-    const std::optional<RobotConflict> conflict = firstConflict(graph, schedule);
+    const std::optional<RobotConflict> conflict = firstConflict(graph, node.schedule, node.clear_until);
     if (!conflict) {
       result.status = ConflictStatus::kResolved;
-      result.constraints = static_cast<int>(node.extra.size());
-      result.schedule = std::move(schedule);
+      result.constraints = static_cast<int>(node.constraints());
+      result.schedule = std::move(node.schedule);
       return result;
     }
     result.reason = describe(graph, *conflict);
-    const ScheduleView view(graph, schedule);
+    const ScheduleView view(graph, node.schedule);
+    const int ra = conflict->robot_a, rb = conflict->robot_b;
+    // a child repeats this schedule, free before the conflict, until their first difference
+    const auto push = [&](Node child) {
+      child.clear_until = std::min(conflict->t, firstDifference(node.schedule, child.schedule, robots));
+      open.push(std::move(child));
+    };
+    // time: A before B, B before A
+    bool ordered = false;
     for (const bool a_first : {true, false}) {
-      const std::optional<Edge> edge =
-          a_first ? precedence(view, schedule.segments, conflict->robot_a, conflict->item_a, conflict->robot_b, conflict->item_b)
-                  : precedence(view, schedule.segments, conflict->robot_b, conflict->item_b, conflict->robot_a, conflict->item_a);
-      if (!edge || std::find(node.extra.begin(), node.extra.end(), *edge) != node.extra.end()) continue;
-      std::vector<Edge> extra = node.extra;
-      extra.push_back(*edge);
-      if (std::optional<Node> child = make(std::move(extra))) open.push(std::move(*child));
+      const std::optional<Precedence> p = a_first ? precedence(view, ra, conflict->item_a, rb, conflict->item_b)
+                                                  : precedence(view, rb, conflict->item_b, ra, conflict->item_a);
+      if (!p || std::find(node.extra.begin(), node.extra.end(), *p) != node.extra.end()) continue;
+      std::vector<Precedence> extra = node.extra;
+      extra.push_back(*p);
+      if (std::optional<Node> child = make(node.schedule.segments, std::move(extra), node.detours, node.parkings)) {
+        push(std::move(*child));
+        ordered = true;
+      }
+    }
+    // space, when time cannot help: a robot on a move takes a detour around where the other one
+    // is meanwhile; a robot standing before a move waits somewhere out of the other one's way
+    if (ordered) continue;
+    int& reroutes = result.reroutes;
+    const std::vector<ScheduleSegment>& segments = node.schedule.segments;
+    for (const auto& [robot, item, other, other_item] :
+         {std::tuple{ra, conflict->item_a, rb, conflict->item_b}, std::tuple{rb, conflict->item_b, ra, conflict->item_a}}) {
+      const Timeline& line = view.timeline(robot);
+      if (reroutes >= budget.max_reroutes) break;
+      if (item >= 0) {
+        const int segment = line.segments[item];
+        if (segments[segment].move == nullptr) continue;
+        ++reroutes;
+        if (std::optional<Node> child = detoured(node, segment, obstaclesDuring(view, node.schedule, segment, other))) {
+          push(std::move(*child));
+        }
+      } else if (const int k = -1 - item; k < static_cast<int>(line.segments.size()) && other_item >= 0) {
+        const int segment = line.segments[k];
+        if (segments[segment].move == nullptr) continue;
+        const int busy = view.timeline(other).segments[other_item];
+        ++reroutes;
+        if (std::optional<Node> child = parked(node, segment, obstaclesDuring(view, node.schedule, busy, other))) {
+          push(std::move(*child));
+        }
+      }
     }
   }
   result.status = ConflictStatus::kUnresolvable;

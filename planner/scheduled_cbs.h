@@ -26,8 +26,15 @@
 // speed varying within it). At the earliest conflict, between item A of robot a and item B of
 // robot b (an item is a segment, or the robot standing still between two segments), the node
 // branches into "A ends before B starts" and "B ends before A starts" — each a precedence
-// (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. Robot
-// paths are not changed, only their timing: the low level is the schedule itself.
+// (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. When
+// neither order can hold (a cycle with the schedule's own precedences), the low level changes
+// a robot's route on its roadmap instead (at most max_reroutes times per call):
+//  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
+//    stands or passes meanwhile (its states every 100 ms of the move's window);
+//  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
+//    configuration clear of the other's item and waits there; the move is split in two.
+// A child repeats its parent's schedule up to their first difference, so the check starts at
+// the earlier of that and the parent's conflict.
 
 #include <cstdint>
 #include <functional>
@@ -59,6 +66,7 @@ struct Schedule {
 
 struct ConflictResolutionBudget {
   int max_nodes = 2000;       ///< high-level nodes expanded
+  int max_reroutes = 8;      ///< detours and parkings tried (each a roadmap search)
   std::function<bool()> stop;  ///< true when time is up (may be empty)
 };
 
@@ -68,7 +76,8 @@ struct ConflictResult {
   ConflictStatus status = ConflictStatus::kUnresolvable;
   std::optional<Schedule> schedule;
   int nodes = 0;            ///< high-level nodes expanded
-  int constraints = 0;      ///< precedences in the solution
+  int constraints = 0;      ///< precedences, detours and parkings in the solution
+  int reroutes = 0;         ///< detours and parkings tried
   std::string reason;       ///< for kUnresolvable / kBudget: the last conflict found
 };
 
@@ -91,6 +100,7 @@ struct RobotConflict {
   int robot_a = -1, robot_b = -1;
   int item_a = -1, item_b = -1;  ///< segment index, or -1 - k for standing still before segment k
 };
-std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule);
+/// `from` [s]: the schedule is known to be free before it (check intervals ending after it).
+std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from = 0.0);
 
 }  // namespace dashbed::planner
