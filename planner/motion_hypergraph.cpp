@@ -224,17 +224,20 @@ Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<co
   m.grasp = grasp;
   m.duration = polylineDuration(path, timing_);
   m.occupied = occupied;
-  // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile
+  // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile.
+  // Each piece is checked against all of them at once, and site by site only when that fails.
   m.touches = SiteSet(sites_.numSites());
+  SiteSet unoccupied(sites_.numSites());
   for (int s = 0; s < sites_.numSites(); ++s) {
-    if (occupied.test(s) || !sites_.site(s) || s / 2 == object) continue;
-    SiteSet only(sites_.numSites());
-    only.set(s);
-    for (std::size_t i = 1; i < path.size(); ++i) {
-      if (!map.motionFree(path[i - 1], path[i], only)) {
-        m.touches.set(s);
-        break;
-      }
+    if (!occupied.test(s) && sites_.site(s) && s / 2 != object) unoccupied.set(s);
+  }
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    if (map.motionFree(path[i - 1], path[i], unoccupied)) continue;
+    for (int s = 0; s < sites_.numSites(); ++s) {
+      if (!unoccupied.test(s) || m.touches.test(s)) continue;
+      SiteSet only(sites_.numSites());
+      only.set(s);
+      if (!map.motionFree(path[i - 1], path[i], only)) m.touches.set(s);
     }
   }
   m.path = std::move(path);
