@@ -59,10 +59,11 @@ struct DetourConstraint {
   std::vector<Obstacle> avoid;
 };
 
-/// The segment list with segment k replaced by two (k and k + 1): indices after k shift by one,
-/// and a reference to the end of k now means the end of the second.
-void splitIndex(int k, int& segment, bool at_end) {
-  if (segment > k || (segment == k && at_end)) ++segment;
+/// The segment list with move k split at a parking (k goes there, k + 1 on to the old end):
+/// indices from k on shift by one, so what constrained the move now constrains its second part
+/// and the way to the parking is free to go early.
+void splitIndex(int k, int& segment) {
+  if (segment >= k) ++segment;
 }
 
 /// Local times of the points of a segment (path waypoints or transition keys) [ms].
@@ -258,7 +259,7 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
       edges.push_back({s, s + 1, segments[s].duration});
       // a move into a transition arrives just in time: the robot waits where it was, not in
       // front of the transition, where it could block the robot it is waiting for
-      if (segments[s].move != nullptr && segments[s + 1].motion != nullptr) {
+      if (segments[s].move != nullptr && segments[s + 1].motion != nullptr && !segments[s].early) {
         edges.push_back({s + 1, s, -segments[s].duration});
       }
     }
@@ -518,13 +519,13 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     segments.insert(segments.begin() + segment + 1, second);
     std::vector<Precedence> extra = node.extra;
     for (Precedence& p : extra) {
-      splitIndex(segment, p.from, p.from_end);
-      splitIndex(segment, p.to, p.to_end);
+      splitIndex(segment, p.from);
+      splitIndex(segment, p.to);
     }
     std::vector<DetourConstraint> detours;
     for (DetourConstraint d : node.detours) {
       if (d.segment == segment) continue;  // that move is replaced
-      splitIndex(segment, d.segment, false);
+      splitIndex(segment, d.segment);
       detours.push_back(std::move(d));
     }
     return make(std::move(segments), std::move(extra), std::move(detours), node.parkings + 1);
@@ -567,7 +568,19 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       if (!p || std::find(node.extra.begin(), node.extra.end(), *p) != node.extra.end()) continue;
       std::vector<Precedence> extra = node.extra;
       extra.push_back(*p);
-      if (std::optional<Node> child = make(node.schedule.segments, std::move(extra), node.detours, node.parkings)) {
+      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings);
+      // a move into a transition that cannot end before the other starts just in time (both
+      // robots going into one handoff) may arrive early and wait in front of it
+      const std::vector<ScheduleSegment>& segments = node.schedule.segments;
+      const int a = p->from;
+      if (!child && p->from_end && segments[a].move != nullptr && !segments[a].early &&
+          a + 1 < static_cast<int>(segments.size()) && segments[a + 1].robot == segments[a].robot &&
+          segments[a + 1].motion != nullptr) {
+        std::vector<ScheduleSegment> early = segments;
+        early[a].early = true;
+        child = make(std::move(early), std::move(extra), node.detours, node.parkings);
+      }
+      if (child) {
         push(std::move(*child));
         ordered = true;
       }

@@ -56,6 +56,9 @@ struct ScheduleSegment {
   Millis duration = 0;
   std::optional<HeldObject> held;  ///< moves: the object carried
   double finger = 0.025;           ///< moves: finger position [m]
+  /// moves into a transition: may arrive before it starts and wait in front of it (set by
+  /// conflict resolution; by default a robot arrives just in time)
+  bool early = false;
 };
 
 struct Schedule {
