@@ -1,14 +1,17 @@
 // The DaSH planner's longer runs (label "long"): the shelving search with its scheduling
-// constraint, and MM-DaSH against greedy. Iteration caps, no wall-clock budgets.
+// constraint, three robots in a hand-written layout, and MM-DaSH against greedy. Iteration
+// caps, no wall-clock budgets.
 #include <catch2/catch.hpp>
 
 #include <map>
+#include <set>
 #include <string>
 
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
 #include "planner/hyperpath_search.h"
 #include "tests/planner/dash_test_support.h"
+#include "tests/planner/plan_checks.h"
 
 using namespace dashbed;
 using namespace dashbed::planner;
@@ -48,6 +51,20 @@ TEST_CASE("shelving task plans fill the back slot before the front slot in front
     CHECK(placed_at.at(back) < start);
   }
   CHECK(pairs == 2);
+}
+
+TEST_CASE("three robots in a layout of their own get valid collision-free plans", "[planner][dash]") {
+  // r2 stands at the side of the table between the two others: its moves cross theirs, and
+  // conflict resolution needs orderings, detours or parkings
+  const core::LoadedWorld world = core::loadWorld(worldPath("sort_3r_6c_side.yaml"));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  std::set<std::string> busy;
+  for (const core::PlanAction& a : result.plan->actions) busy.insert(a.robot);
+  CHECK(busy.size() == 3);
 }
 
 TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
