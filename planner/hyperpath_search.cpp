@@ -236,6 +236,8 @@ std::optional<TransitionHistory> HyperpathSearch::finish(const TransitionHistory
 bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   // A holding robot progresses when it can place its object, or hand it (towards the goal) to
   // a robot that is free or itself progresses. Holding robots that cannot wait on each other.
+  // After a place: an object stays at its goal, so an object none of whose place samples (any
+  // robot, any grasp seen) avoids the goal sites taken so far can never be placed.
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   const std::size_t n = history.robots.size();
   std::vector<bool> progresses(n, false);
@@ -257,6 +259,29 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   }
   for (std::size_t r = 0; r < n; ++r) {
     if (history.robots[r].object != -1 && !progresses[r]) return true;
+  }
+  if (history.steps.empty() || graph_->transition(history.steps.back().transition).sample.kind != TransitionKind::kPlace) {
+    return false;
+  }
+  SiteSet placed(graph_->sites().numSites());
+  for (std::size_t o = 0; o < history.objects.size(); ++o) {
+    if (history.objects[o].place == ObjectPlace::kGoal) placed.set(ObjectSites::goalSite(static_cast<int>(o)));
+  }
+  for (std::size_t o = 0; o < history.objects.size(); ++o) {
+    const int oi = static_cast<int>(o);
+    if (!graph_->sites().goal[o] || history.objects[o].place == ObjectPlace::kGoal) continue;
+    bool placeable = false;
+    for (std::size_t h = 0; h < ts.numHyperarcs() && !placeable; ++h) {
+      const TransitionHyperarc& arc = ts.hyperarcs()[h];
+      if (arc.kind != TransitionKind::kPlace || arc.object != oi) continue;
+      // by index: sampling may add grasps
+      for (std::size_t g = 0; g < graph_->graspsOf(oi).size() && !placeable; ++g) {
+        for (const int id : graph_->transitionsOf(static_cast<int>(h), static_cast<int>(g))) {
+          placeable = placeable || !graph_->transition(id).sample.touches.intersects(placed);
+        }
+      }
+    }
+    if (!placeable) return true;
   }
   return false;
 }

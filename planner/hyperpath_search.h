@@ -14,7 +14,8 @@
 // Route pruning. An object is only moved along its task-space route: picked by a robot from
 // which its goal can be reached, handed to a robot nearer its goal (by the cost-to-go below),
 // and a history in which holding robots wait on each other in a cycle (each needs to hand its
-// object to another holding robot) is abandoned.
+// object to another holding robot) is abandoned, as is one whose last place took a goal site
+// that every place sample of another object touches (a front slot filled before its back one).
 //
 // Cost-to-go (the A*-like query's heuristic): for each object and task-space vertex, the
 // cheapest sum of sampled transition durations to its goal on the task-space hypergraph
