@@ -95,6 +95,12 @@ struct RobotState {
   int item = 0;
 };
 
+/// Same configuration, fingers and held object (same grasp).
+bool sameState(const RobotState& x, const RobotState& y) {
+  return x.q == y.q && x.finger == y.finger && x.held.has_value() == y.held.has_value() &&
+         (!x.held || (x.held->object == y.held->object && x.held->X_TO.isApprox(y.held->X_TO, 0.0)));
+}
+
 class ScheduleView {
  public:
   ScheduleView(const MotionHypergraph& graph, const Schedule& schedule) : graph_(&graph), schedule_(&schedule) {
@@ -363,6 +369,8 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
       grid.push_back(schedule.makespan);
       std::sort(grid.begin(), grid.end());
       grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
+      // both robots standing as they stood in the last interval checked: nothing new to check
+      std::optional<std::pair<RobotState, RobotState>> standing;
       for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
         const double t0 = toSeconds(grid[i]), t1 = toSeconds(grid[i + 1]);
         if (first && t0 > first->t) break;
@@ -377,6 +385,8 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
         };
         if (in_step(a, a0) >= 0 && in_step(a, a0) == in_step(b, b0)) continue;
         const RobotState a1 = view.at(a, t1, false), b1 = view.at(b, t1, false);
+        const bool still = sameState(a0, a1) && sameState(b0, b1);
+        if (still && standing && sameState(a0, standing->first) && sameState(b0, standing->second)) continue;
         const int steps = static_cast<int>(std::ceil(
             kStepHeadroom * std::max(scene.motionSteps(a, view.full(a0), view.full(a1), a0.held),
                                      scene.motionSteps(b, view.full(b0), view.full(b1), b0.held))));
@@ -392,6 +402,7 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
           }
         }
         if (first && first->robot_a == a && first->robot_b == b) break;
+        standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
       }
     }
   }
