@@ -26,6 +26,19 @@ struct Edge {
   bool operator==(const Edge&) const = default;
 };
 
+/// Holding the same object in the same grasp (or both nothing).
+bool sameHeld(const std::optional<HeldObject>& x, const std::optional<HeldObject>& y) {
+  return x.has_value() == y.has_value() && (!x || (x->object == y->object && x->X_TO.isApprox(y->X_TO, 0.0)));
+}
+
+/// The full configuration the collision checker wants: arm, then both fingers at `finger`.
+Eigen::VectorXd fullConfiguration(const core::ArmConfig& q, double finger) {
+  Eigen::VectorXd f(8);
+  for (int j = 0; j < 6; ++j) f[j] = q[j];
+  f[6] = f[7] = finger;
+  return f;
+}
+
 /// A scheduling constraint of the high level: a point of segment `from` (its start, or its end)
 /// comes no later than a point of segment `to`. Kept symbolic, as detours change durations.
 struct Precedence {
@@ -46,8 +59,7 @@ struct Obstacle {
   Eigen::VectorXd q;
   std::optional<HeldObject> held;
   bool operator==(const Obstacle& o) const {
-    return robot == o.robot && q == o.q && held.has_value() == o.held.has_value() &&
-           (!held || (held->object == o.held->object && held->X_TO.isApprox(o.held->X_TO, 0.0)));
+    return robot == o.robot && q == o.q && sameHeld(held, o.held);
   }
 };
 
@@ -97,8 +109,7 @@ struct RobotState {
 
 /// Same configuration, fingers and held object (same grasp).
 bool sameState(const RobotState& x, const RobotState& y) {
-  return x.q == y.q && x.finger == y.finger && x.held.has_value() == y.held.has_value() &&
-         (!x.held || (x.held->object == y.held->object && x.held->X_TO.isApprox(y.held->X_TO, 0.0)));
+  return x.q == y.q && x.finger == y.finger && sameHeld(x.held, y.held);
 }
 
 class ScheduleView {
@@ -142,12 +153,7 @@ class ScheduleView {
     return state;
   }
 
-  Eigen::VectorXd full(const RobotState& state) const {
-    Eigen::VectorXd q(8);
-    for (int j = 0; j < 6; ++j) q[j] = state.q[j];
-    q[6] = q[7] = state.finger;
-    return q;
-  }
+  static Eigen::VectorXd full(const RobotState& state) { return fullConfiguration(state.q, state.finger); }
 
  private:
   void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
@@ -479,12 +485,6 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.makespan = makespanOf(schedule);
     return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++};
   };
-  const auto full = [](const core::ArmConfig& q, double finger) {
-    Eigen::VectorXd f(8);
-    for (int j = 0; j < 6; ++j) f[j] = q[j];
-    f[6] = f[7] = finger;
-    return f;
-  };
   // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
   const auto detoured = [&](const Node& node, int segment, std::vector<Obstacle> avoid) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
@@ -498,7 +498,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
     const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-      const Eigen::VectorXd qa = full(a, seg.finger), qb = full(b, seg.finger);
+      const Eigen::VectorXd qa = fullConfiguration(a, seg.finger), qb = fullConfiguration(b, seg.finger);
       return std::all_of(obstacles.begin(), obstacles.end(), [&](const Obstacle& o) {
         return checker.motionsFree(seg.robot, qa, qb, seg.held, o.robot, o.q, o.q, o.held);
       });
@@ -515,7 +515,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     const ScheduleSegment& seg = node.schedule.segments[segment];
     if (avoid.size() > kMaxParkingObstacles) return std::nullopt;
     const auto split = graph.parking(*seg.move, [&](const core::ArmConfig& q) {
-      const Eigen::VectorXd f = full(q, seg.finger);
+      const Eigen::VectorXd f = fullConfiguration(q, seg.finger);
       return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
         return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
       });
