@@ -44,6 +44,7 @@ nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStat
           {"task_plans", stats.task_plans},
           {"conflict_nodes", stats.conflict_nodes},
           {"scheduling_constraints", stats.scheduling_constraints},
+          {"conflict_constraints", stats.conflict_constraints},
           {"optimistic_makespan", stats.optimistic_makespan},
           {"makespan", stats.makespan}};
 }
@@ -123,7 +124,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   Millis best = std::numeric_limits<Millis>::max();
   std::string last_failure = "no task plan found";
 
-  // conflict resolution of a task plan; keeps it when better than the best so far
+  // conflict resolution of a task plan; keeps it when better than the best so far. Returns
+  // true when its failure gave a new scheduling constraint (at most the round's allowance).
+  int feedbacks = 0;  // this round
   const auto resolve = [&](const TransitionHistory& history) {
     ++stats.task_plans;
     // moves planned for parkings count as construction, like the search's
@@ -134,15 +137,24 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     stats.conflict_nodes += resolved.nodes;
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
-      return;
+      if (feedbacks >= settings.scheduling_constraints_per_round) return false;
+      for (const auto& [a, b] : resolved.unordered) {
+        if (graph->addSchedulingConstraint(a, b)) {
+          ++feedbacks;
+          ++stats.scheduling_constraints;
+          return true;
+        }
+      }
+      return false;
     }
     if (resolved.schedule->makespan < best) {
       best = resolved.schedule->makespan;
       best_history = history;
       best_schedule = resolved.schedule;
-      stats.scheduling_constraints = resolved.constraints;
+      stats.conflict_constraints = resolved.constraints;
       stats.optimistic_makespan = toSeconds(history.makespan());
     }
+    return false;
   };
   const auto search_timed = [&](auto&& query) {
     // the search builds the representation lazily: that time counts as construction
@@ -156,22 +168,37 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
-    // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at home
-    for (const bool park : {false, true}) {
-      HyperpathSearch query(*graph, park);
-      const SearchResult greedy = search_timed([&] { return query.greedy(search_budget); });
-      if (greedy.status == SearchStatus::kFound) resolve(*greedy.plan);
-      if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
-      if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
-      if (best_schedule || time_up()) break;
+    feedbacks = 0;
+    // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at
+    // home; a new scheduling constraint starts the queries again
+    for (bool again = true; again && !best_schedule && !time_up();) {
+      again = false;
+      for (const bool park : {false, true}) {
+        HyperpathSearch query(*graph, park);
+        const SearchResult greedy = search_timed([&] { return query.greedy(search_budget); });
+        if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan);
+        if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
+        if (greedy.status == SearchStatus::kExhausted) {
+          last_failure = "no task plan in the representation";
+          // a pair conflict resolution could not order in one history may be ordered in
+          // another: constraints that leave no task plan are dropped
+          if (graph->numSchedulingConstraints() > 0) {
+            graph->clearSchedulingConstraints();
+            again = true;
+            break;
+          }
+        }
+        if (again || best_schedule || time_up()) break;
+      }
     }
-    if (settings.method == Method::kOptimal && !time_up()) {
-      // Next-Best Search: task plans in order of optimistic makespan until no better is possible
+    // Next-Best Search: task plans in order of optimistic makespan until no better is possible
+    for (bool again = settings.method == Method::kOptimal; again && !time_up();) {
+      again = false;
       HyperpathSearch search(*graph);
-      for (int k = 0; k < settings.next_best_plans && !time_up(); ++k) {
+      for (int k = 0; k < settings.next_best_plans && !again && !time_up(); ++k) {
         const SearchResult next = search_timed([&] { return search.nextBest(search_budget); });
         if (next.status != SearchStatus::kFound || next.plan->makespan() >= best) break;
-        resolve(*next.plan);
+        again = resolve(*next.plan);
       }
     }
     if (best_schedule) break;

@@ -2,7 +2,11 @@
 // The DaSH planner for multi-manipulator rearrangement (paper: Method > Overview, Alg. 3):
 // build the task-space hypergraph (Alg. 1) and the motion hypergraph (Alg. 2), query a task
 // plan on the transition-extended hypergraph (Alg. 4), resolve conflicts (scheduled CBS), and
-// expand the representation by a round when that fails.
+// expand the representation by a round when that fails. A conflict that conflict resolution
+// cannot order becomes a scheduling constraint on the pair of transitions involved, and the
+// query runs again on the same representation (paper: Transition-extended Hypergraph >
+// Scheduling Constraints). The constraints steer the search; a pair that could not be ordered
+// in one history may be in another, so when they leave no task plan they are dropped.
 //
 //  Method::kGreedy   Greedy-MM-DaSH: one greedy hyperpath query per round; the first plan whose
 //                    conflicts resolve is returned (earlyTermination from the start).
@@ -37,6 +41,9 @@ struct PlannerSettings {
   std::uint64_t search_expansions = 20000;    ///< per hyperpath query
   int conflict_nodes = 500;                   ///< per conflict resolution
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search
+  /// Scheduling constraints fed back from failed conflict resolutions per round, each followed
+  /// by a new query on the same representation.
+  int scheduling_constraints_per_round = 6;
   RepresentationSettings representation;
 };
 
@@ -56,7 +63,8 @@ struct PlannerStats {
   std::uint64_t expansions = 0;  ///< hyperpath-search expansions, all rounds
   int task_plans = 0;            ///< task plans given to conflict resolution
   int conflict_nodes = 0;        ///< conflict-resolution nodes, all task plans
-  int scheduling_constraints = 0;  ///< precedences added by conflict resolution in the plan
+  int scheduling_constraints = 0;  ///< fed back from conflict resolution to the task search, all rounds
+  int conflict_constraints = 0;    ///< precedences, detours and parkings of the plan's conflict resolution
   double optimistic_makespan = 0.0;  ///< of the task plan returned [s]
   double makespan = 0.0;             ///< of the plan [s]
 };

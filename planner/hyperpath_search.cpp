@@ -126,7 +126,7 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     }
     for (const int id : graph_->transitionsOf(static_cast<int>(h), grasp)) {
       const TransitionSample& sample = graph_->transition(id).sample;
-      if (sample.touches.intersects(occupied)) continue;
+      if (sample.touches.intersects(occupied) || excluded(history, id)) continue;
       Millis start = object.since;
       for (const TransitionMotion& motion : sample.motions) {
         const TransitionHistory::RobotState& r = history.robots[motion.robot];
@@ -137,6 +137,12 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     }
   }
   return result;
+}
+
+bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
+  return std::any_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
+    return graph_->schedulingConflict(step.transition, transition);
+  });
 }
 
 std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory& history, const Candidate& candidate) {
@@ -235,11 +241,23 @@ std::optional<TransitionHistory> HyperpathSearch::finish(const TransitionHistory
 
 bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   // A holding robot progresses when it can place its object, or hand it (towards the goal) to
-  // a robot that is free or itself progresses. Holding robots that cannot wait on each other.
-  // After a place: an object stays at its goal, so an object none of whose place samples (any
-  // robot, any grasp seen) avoids the goal sites taken so far can never be placed.
+  // a robot that is free or itself progresses, with a sample for the grasp it holds the object
+  // in that keeps clear of the goal sites filled so far (an object stays at its goal). Holding
+  // robots that cannot progress are a dead end: a pick in a grasp nothing continues from, or
+  // robots waiting on each other in a cycle.
+  // After a place: an object none of whose place samples (any robot, any grasp seen) avoids
+  // the goal sites taken so far can never be placed.
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   const std::size_t n = history.robots.size();
+  SiteSet placed(graph_->sites().numSites());
+  for (std::size_t o = 0; o < history.objects.size(); ++o) {
+    if (history.objects[o].place == ObjectPlace::kGoal) placed.set(ObjectSites::goalSite(static_cast<int>(o)));
+  }
+  const auto available = [&](std::size_t h, int grasp) {
+    const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
+    return std::any_of(ids.begin(), ids.end(),
+                       [&](int id) { return !graph_->transition(id).sample.touches.intersects(placed); });
+  };
   std::vector<bool> progresses(n, false);
   for (bool changed = true; changed;) {
     changed = false;
@@ -254,7 +272,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
         ok = after != kUnreachable && after < before &&
              (history.robots[arc.receiver].object == -1 || progresses[arc.receiver]);
       }
-      if (ok) progresses[r] = changed = true;
+      if (ok && available(h, history.robots[r].grasp)) progresses[r] = changed = true;
     }
   }
   for (std::size_t r = 0; r < n; ++r) {
@@ -262,10 +280,6 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   }
   if (history.steps.empty() || graph_->transition(history.steps.back().transition).sample.kind != TransitionKind::kPlace) {
     return false;
-  }
-  SiteSet placed(graph_->sites().numSites());
-  for (std::size_t o = 0; o < history.objects.size(); ++o) {
-    if (history.objects[o].place == ObjectPlace::kGoal) placed.set(ObjectSites::goalSite(static_cast<int>(o)));
   }
   for (std::size_t o = 0; o < history.objects.size(); ++o) {
     const int oi = static_cast<int>(o);
@@ -276,9 +290,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
       if (arc.kind != TransitionKind::kPlace || arc.object != oi) continue;
       // by index: sampling may add grasps
       for (std::size_t g = 0; g < graph_->graspsOf(oi).size() && !placeable; ++g) {
-        for (const int id : graph_->transitionsOf(static_cast<int>(h), static_cast<int>(g))) {
-          placeable = placeable || !graph_->transition(id).sample.touches.intersects(placed);
-        }
+        placeable = available(h, static_cast<int>(g));
       }
     }
     if (!placeable) return true;

@@ -9,13 +9,18 @@
 // move hyperarcs bringing each robot to the sample's start. The transition starts at the latest
 // of its tail's times (tail weight = max). Transitions that would touch an occupied object site
 // are not available (vertex-hyperarc scheduling constraints); the site stays "busy" for the
-// time the motion runs so that a later placement there waits for it.
+// time the motion runs so that a later placement there waits for it. Nor is a transition that a
+// scheduling constraint from conflict resolution pairs with one the history holds
+// (MotionHypergraph::addSchedulingConstraint; a query started before a constraint was added may
+// still hold histories that break it: start a new query).
 //
 // Route pruning. An object is only moved along its task-space route: picked by a robot from
-// which its goal can be reached, handed to a robot nearer its goal (by the cost-to-go below),
-// and a history in which holding robots wait on each other in a cycle (each needs to hand its
-// object to another holding robot) is abandoned, as is one whose last place took a goal site
-// that every place sample of another object touches (a front slot filled before its back one).
+// which its goal can be reached, handed to a robot nearer its goal (by the cost-to-go below).
+// A history is abandoned when a holding robot cannot progress: it has no place or handoff
+// sample for the grasp it holds the object in that keeps clear of the goal sites filled so
+// far, or holding robots wait on each other in a cycle (each needs to hand its object to
+// another holding robot); and when its last place took a goal site that every place sample of
+// another object touches (a front slot filled before its back one).
 //
 // Cost-to-go (the A*-like query's heuristic): for each object and task-space vertex, the
 // cheapest sum of sampled transition durations to its goal on the task-space hypergraph
@@ -82,6 +87,8 @@ class HyperpathSearch {
   std::vector<Candidate> candidates(const TransitionHistory& history);
   std::optional<TransitionHistory> apply(const TransitionHistory& history, const Candidate& candidate);
   std::optional<TransitionHistory> finish(const TransitionHistory& history);
+  /// The history holds a transition that a scheduling constraint pairs with `transition`.
+  bool excluded(const TransitionHistory& history, int transition) const;
   bool deadlocked(const TransitionHistory& history) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();

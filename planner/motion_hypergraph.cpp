@@ -276,6 +276,15 @@ std::optional<std::pair<const Move*, const Move*>> MotionHypergraph::parking(
   return std::nullopt;
 }
 
+bool MotionHypergraph::addSchedulingConstraint(int transition_a, int transition_b) {
+  if (transition_a == transition_b) return false;
+  return scheduling_constraints_.emplace(std::minmax(transition_a, transition_b)).second;
+}
+
+bool MotionHypergraph::schedulingConflict(int transition_a, int transition_b) const {
+  return scheduling_constraints_.contains(std::minmax(transition_a, transition_b));
+}
+
 int MotionHypergraph::expand() {
   const ScopedTimer timer(construction_seconds_);
   ++round_;

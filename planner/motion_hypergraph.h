@@ -32,6 +32,7 @@
 #include <map>
 #include <memory>
 #include <optional>
+#include <set>
 #include <tuple>
 #include <vector>
 
@@ -137,6 +138,15 @@ class MotionHypergraph {
                                                              const std::function<bool(const core::ArmConfig&)>& clear,
                                                              int attempts = 5);
 
+  /// Scheduling constraints (paper: Transition-extended Hypergraph > Scheduling Constraints):
+  /// pairs of transition hyperarcs whose robots conflict resolution could not order around each
+  /// other. A transition history may include at most one transition of each pair. add...
+  /// returns false when the pair was known already (or is one transition).
+  bool addSchedulingConstraint(int transition_a, int transition_b);
+  bool schedulingConflict(int transition_a, int transition_b) const;
+  std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size(); }
+  void clearSchedulingConstraints() { scheduling_constraints_.clear(); }  ///< all of them
+
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
   /// growth. Returns the number of the round just completed (the first is 1).
   int expand();
@@ -190,6 +200,7 @@ class MotionHypergraph {
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
   std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
   std::deque<Move> detours_;  // made by detour()
+  std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)
   std::vector<int> source_, target_;
 };
 

@@ -342,6 +342,15 @@ std::vector<Obstacle> obstaclesDuring(const ScheduleView& view, const Schedule& 
   return states;
 }
 
+/// The transition (MotionTransition id) a robot's conflicting item belongs to (see
+/// ConflictResult::unordered), or -1.
+int transitionOf(const TransitionHistory& history, const Schedule& schedule, const Timeline& line, int item) {
+  const int k = item >= 0 ? item : -2 - item;  // standing still before segment k: the segment before
+  if (k < 0 || k >= static_cast<int>(line.segments.size())) return -1;
+  const int step = schedule.segments[line.segments[k]].step;
+  return step < 0 ? -1 : history.steps[step].transition;
+}
+
 std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
   std::ostringstream out;
   out << graph.world().world->robots[c.robot_a].name << " and " << graph.world().world->robots[c.robot_b].name
@@ -599,6 +608,14 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     // space, when time cannot help: a robot on a move takes a detour around where the other one
     // is meanwhile; a robot standing before a move waits somewhere out of the other one's way
     if (ordered) continue;
+    const int ta = transitionOf(history, node.schedule, view.timeline(ra), conflict->item_a);
+    const int tb = transitionOf(history, node.schedule, view.timeline(rb), conflict->item_b);
+    if (ta >= 0 && tb >= 0 && ta != tb) {
+      const std::pair<int, int> pair = std::minmax(ta, tb);
+      if (std::find(result.unordered.begin(), result.unordered.end(), pair) == result.unordered.end()) {
+        result.unordered.push_back(pair);
+      }
+    }
     int& reroutes = result.reroutes;
     const std::vector<ScheduleSegment>& segments = node.schedule.segments;
     for (const auto& [robot, item, other, other_item] :

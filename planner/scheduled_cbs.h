@@ -34,7 +34,8 @@
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
 //    configuration clear of the other's item and waits there; the move is split in two.
 // A child repeats its parent's schedule up to their first difference, so the check starts at
-// the earlier of that and the parent's conflict.
+// the earlier of that and the parent's conflict. Conflicts that no order resolves are reported
+// back (ConflictResult::unordered) for the task search to avoid.
 
 #include <cstdint>
 #include <functional>
@@ -82,6 +83,12 @@ struct ConflictResult {
   int constraints = 0;      ///< precedences, detours and parkings in the solution
   int reroutes = 0;         ///< detours and parkings tried
   std::string reason;       ///< for kUnresolvable / kBudget: the last conflict found
+  /// Conflicts that no order of the two items could resolve, as the pair of transitions
+  /// (MotionTransition ids) the items belong to, in the order found, without repeats: the
+  /// hyperarc-hyperarc scheduling constraints to feed back to the task search. An item belongs
+  /// to its step's transition (a move to the transition it leads into; standing still, to the
+  /// segment before); items of no transition (before the first, the move home) give none.
+  std::vector<std::pair<int, int>> unordered;
 };
 
 /// Resolves the robot-robot conflicts of a complete history (with its moves home).

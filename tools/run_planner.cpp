@@ -40,7 +40,8 @@ std::string describePlanResult(const planner::PlanResult& result) {
   out << "motion hypergraph: " << s.motion_vertices << " vertices, " << s.motion_transitions << " transitions, "
       << s.motion_moves << " moves, " << s.roadmaps << " roadmaps (" << s.roadmap_nodes << " nodes)\n";
   out << "search: " << s.expansions << " expansions, " << s.task_plans << " task plans, " << s.conflict_nodes
-      << " conflict-resolution nodes, " << s.scheduling_constraints << " scheduling constraints\n";
+      << " conflict-resolution nodes, " << s.scheduling_constraints << " scheduling constraints fed back, "
+      << s.conflict_constraints << " constraints in the plan's conflict resolution\n";
   if (result.plan) {
     out << std::setprecision(2) << "plan: " << result.plan->actions.size() << " actions, makespan " << s.makespan
         << " s (optimistic " << s.optimistic_makespan << " s)\n";

@@ -10,6 +10,7 @@
 #include <catch2/catch.hpp>
 
 #include "controllers/trajectory_interpolator.h"
+#include "core/grasps.h"
 #include "core/plan.h"
 #include "core/world_loader.h"
 #include "planner/collision_checker.h"
@@ -58,11 +59,13 @@ inline void requireValidActions(const core::Plan& plan, const core::World& world
 
 /// No two robot bodies touch along the plan as the simulator interpolates it, every 2 ms,
 /// with a checker of zero margin (the planner's own checks use a margin and its timelines).
-/// Fingers follow the gripper commands: open, or closed on a cube (the worlds used here have
-/// cubes of one size).
+/// Fingers follow the gripper commands: open, or closed on an object (the worlds used here have
+/// objects of one narrowest width, the only one within the Hand-E's stroke).
 inline void requireNoRobotCollision(const core::Plan& plan, const core::LoadedWorld& loaded) {
-  const double cube = loaded.world->objects.front().size.x();
-  for (const core::ObjectSpec& object : loaded.world->objects) REQUIRE(object.size == Eigen::Vector3d::Constant(cube));
+  const double width = loaded.world->objects.front().size.minCoeff();
+  for (const core::ObjectSpec& object : loaded.world->objects) {
+    for (const double side : object.size) REQUIRE((side == width || side > core::kHandeMaxOpening));
+  }
   CollisionSettings exact;
   exact.margin = 0.0;
   exact.motion_step = 1e-3;
@@ -79,7 +82,7 @@ inline void requireNoRobotCollision(const core::Plan& plan, const core::LoadedWo
       double finger = 0.025;
       for (const core::GripperCommand& command : plan.gripper) {
         if (command.robot == plan.trajectories[r].robot && command.t <= t) {
-          finger = command.action == core::GripperAction::kOpen ? 0.025 : cube / 2;
+          finger = command.action == core::GripperAction::kOpen ? 0.025 : width / 2;
         }
       }
       q[r][6] = q[r][7] = finger;

@@ -97,3 +97,31 @@ TEST_CASE("the motion hypergraph's DOT shows its vertex map and transitions", "[
   CHECK(clusters == task_vertices.size());
   CHECK_THAT(dot, Contains("source ->") && Contains("-> target"));
 }
+
+TEST_CASE("a scheduling constraint keeps its pair of transitions out of later task plans", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  const SearchResult first = HyperpathSearch(graph).greedy({});
+  REQUIRE(first.status == SearchStatus::kFound);
+  // the first transitions of the two robots (both pick at the start of the default world)
+  std::map<int, int> first_of;  // robot -> transition
+  for (const ScheduledTransition& step : first.plan->steps) {
+    const TransitionSample& sample = graph.transition(step.transition).sample;
+    if (sample.kind == TransitionKind::kPick) first_of.emplace(sample.motions[0].robot, step.transition);
+  }
+  REQUIRE(first_of.size() == 2);
+  const int a = first_of.begin()->second, b = first_of.rbegin()->second;
+  CHECK(graph.addSchedulingConstraint(a, b));
+  CHECK_FALSE(graph.addSchedulingConstraint(b, a));  // one pair, either order
+  CHECK(graph.schedulingConflict(b, a));
+
+  const SearchResult second = HyperpathSearch(graph).greedy({});
+  REQUIRE(second.status == SearchStatus::kFound);
+  std::set<int> used;
+  for (const ScheduledTransition& step : second.plan->steps) used.insert(step.transition);
+  CHECK_FALSE((used.count(a) == 1 && used.count(b) == 1));
+
+  graph.clearSchedulingConstraints();
+  CHECK_FALSE(graph.schedulingConflict(a, b));
+}

@@ -1,5 +1,5 @@
 // The DaSH planner's longer runs (label "long"): the shelving search with its scheduling
-// constraint, three robots in a hand-written layout, and MM-DaSH against greedy. Iteration
+// constraints, shelving end to end, three robots in a hand-written layout, and MM-DaSH against greedy. Iteration
 // caps, no wall-clock budgets.
 #include <catch2/catch.hpp>
 
@@ -51,6 +51,24 @@ TEST_CASE("shelving task plans fill the back slot before the front slot in front
     CHECK(placed_at.at(back) < start);
   }
   CHECK(pairs == 2);
+}
+
+TEST_CASE("shelving plans solve end to end, back slots first, with conflicts fed back to the search",
+          "[planner][dash][shelf]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("shelf_2r_4o.yaml"));
+  PlannerSettings settings = testSettings();
+  settings.seed = 1;
+  const PlanResult result = solve(world, settings);
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  std::map<std::string, double> placed_at;  // region -> start of its place
+  for (const core::PlanAction& a : result.plan->actions) {
+    if (a.type == core::ActionType::kPlace) placed_at[a.region] = a.start;
+  }
+  REQUIRE(placed_at.size() == world.world->objects.size());
+  for (const std::string slot : {"slot_1", "slot_3"}) CHECK(placed_at.at(slot + "_back") < placed_at.at(slot + "_front"));
 }
 
 TEST_CASE("three robots in a layout of their own get valid collision-free plans", "[planner][dash]") {
