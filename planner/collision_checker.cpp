@@ -430,6 +430,7 @@ struct CheckerState {
     std::vector<Frame> X_WS;
     std::vector<std::uint32_t> shape_stamp;
     std::uint32_t stamp = 0;
+    Eigen::VectorXd q;  // the configuration X_WB was computed for
     bool holding = false;
     int held_object = -1;
     bool held_static = true;
@@ -467,7 +468,24 @@ struct CheckerState {
       slot.X_WS.assign(robot.shapes.size(), Frame());
       slot.shape_stamp.assign(robot.shapes.size(), 0);
       slot.stamp = 0;
+      slot.q.resize(0);
     }
+    // the body poses depend on q only: a robot checked again where it stands keeps them
+    if (slot.q.size() != q.size() || slot.q != q) {
+      slot.q = q;
+      placeBodies(slot, robot, q);
+    }
+    slot.holding = held.has_value();
+    if (slot.holding) {
+      slot.held_object = held->object;
+      slot.held_static = held->check_static;
+      slot.X_WH = slot.X_WB[robot.tcp_body] * robot.X_BT * Frame(held->X_TO);
+    } else {
+      slot.held_object = -1;
+    }
+  }
+
+  void placeBodies(Slot& slot, const RobotData& robot, const Eigen::VectorXd& q) {
     if (++slot.stamp == 0) {
       std::fill(slot.shape_stamp.begin(), slot.shape_stamp.end(), 0);
       slot.stamp = 1;
@@ -487,14 +505,6 @@ struct CheckerState {
         }
       }
       slot.c_WB[i] = X * body.p_BC;
-    }
-    slot.holding = held.has_value();
-    if (slot.holding) {
-      slot.held_object = held->object;
-      slot.held_static = held->check_static;
-      slot.X_WH = slot.X_WB[robot.tcp_body] * robot.X_BT * Frame(held->X_TO);
-    } else {
-      slot.held_object = -1;
     }
   }
 
@@ -1204,6 +1214,18 @@ bool CollisionChecker::robotFree(int robot, const Eigen::VectorXd& q, std::span<
   auto& slot = state_->slots[robot];
   state_->forward(slot, data, q, held);
   return !state_->robotCollision(slot, objects);
+}
+
+std::pair<Eigen::Vector3d, Eigen::Vector3d> CollisionChecker::robotBounds(int robot, const Eigen::VectorXd& q,
+                                                                         const std::optional<HeldObject>& held) {
+  const detail::SceneData& scene = *scene_->data_;
+  const RobotData& data = requireRobot(scene, robot);
+  requireConfiguration(data, q, "q");
+  requireHeld(scene, held);
+  auto& slot = state_->slots[robot];
+  state_->forward(slot, data, q, held);
+  detail::CheckerState::updateBounds(slot, held ? &scene.objects[held->object] : nullptr);
+  return {slot.lo, slot.hi};
 }
 
 bool CollisionChecker::robotsFree(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,

@@ -193,6 +193,12 @@ class CollisionChecker {
   bool robotFree(int robot, const Eigen::VectorXd& q, std::span<const RestingObject> objects,
                  const std::optional<HeldObject>& held = std::nullopt);
 
+  /// The axis-aligned box (min, max corners) around every body's bounding sphere of `robot`
+  /// at q, and the held object's: robotsFree finds two robots free, without further tests,
+  /// whenever their boxes are apart.
+  std::pair<Eigen::Vector3d, Eigen::Vector3d> robotBounds(int robot, const Eigen::VectorXd& q,
+                                                          const std::optional<HeldObject>& held);
+
   /// Robot against robot only (bodies and held objects of both). True when free.
   bool robotsFree(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,
                   int robot_b, const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b);

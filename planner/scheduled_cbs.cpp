@@ -351,6 +351,13 @@ int transitionOf(const TransitionHistory& history, const Schedule& schedule, con
   return step < 0 ? -1 : history.steps[step].transition;
 }
 
+/// Two boxes (min, max corners), each grown by its own distance, do not overlap.
+bool boxesApart(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, double grow_a,
+                const std::pair<Eigen::Vector3d, Eigen::Vector3d>& b, double grow_b) {
+  const double grow = grow_a + grow_b;
+  return ((a.first.array() - grow > b.second.array()) || (b.first.array() - grow > a.second.array())).any();
+}
+
 std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
   std::ostringstream out;
   out << graph.world().world->robots[c.robot_a].name << " and " << graph.world().world->robots[c.robot_b].name
@@ -402,9 +409,16 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
         const RobotState a1 = view.at(a, t1, false), b1 = view.at(b, t1, false);
         const bool still = sameState(a0, a1) && sameState(b0, b1);
         if (still && standing && sameState(a0, standing->first) && sameState(b0, standing->second)) continue;
-        const int steps = static_cast<int>(std::ceil(
-            kStepHeadroom * std::max(scene.motionSteps(a, view.full(a0), view.full(a1), a0.held),
-                                     scene.motionSteps(b, view.full(b0), view.full(b1), b0.held))));
+        const int steps_a = scene.motionSteps(a, view.full(a0), view.full(a1), a0.held);
+        const int steps_b = scene.motionSteps(b, view.full(b0), view.full(b1), b0.held);
+        // no point moves farther than its steps' motion_step within the interval: robots whose
+        // bounding boxes at its start stay apart by that much are free throughout
+        if (boxesApart(checker.robotBounds(a, view.full(a0), a0.held), steps_a * scene.settings().motion_step,
+                       checker.robotBounds(b, view.full(b0), b0.held), steps_b * scene.settings().motion_step)) {
+          standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
+          continue;
+        }
+        const int steps = static_cast<int>(std::ceil(kStepHeadroom * std::max(steps_a, steps_b)));
         for (int k = 0; k <= steps; ++k) {
           const double t = t0 + (t1 - t0) * k / steps;
           const RobotState sa = k == 0 ? a0 : k == steps ? a1 : view.at(a, t, true);
