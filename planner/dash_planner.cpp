@@ -1,5 +1,6 @@
 #include "planner/dash_planner.h"
 
+#include <algorithm>
 #include <limits>
 #include <stdexcept>
 
@@ -175,13 +176,17 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       again = false;
       for (const bool park : {false, true}) {
         HyperpathSearch query(*graph, park);
-        const SearchResult greedy = search_timed([&] { return query.greedy(search_budget); });
+        SearchBudget budget = search_budget;
+        if (graph->numSchedulingConstraints() > 0) {
+          budget.max_expansions = std::min(budget.max_expansions, settings.constrained_search_expansions);
+        }
+        const SearchResult greedy = search_timed([&] { return query.greedy(budget); });
         if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan);
         if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
-        if (greedy.status == SearchStatus::kExhausted) {
-          last_failure = "no task plan in the representation";
+        if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
+        if (greedy.status != SearchStatus::kFound) {
           // a pair conflict resolution could not order in one history may be ordered in
-          // another: constraints that leave no task plan are dropped
+          // another: constraints that leave no task plan (within the budget) are dropped
           if (graph->numSchedulingConstraints() > 0) {
             graph->clearSchedulingConstraints();
             again = true;
