@@ -90,6 +90,8 @@ class HyperpathSearch {
   /// The history holds a transition that a scheduling constraint pairs with `transition`.
   bool excluded(const TransitionHistory& history, int transition) const;
   bool deadlocked(const TransitionHistory& history) const;
+  /// Whether `robot` has a place sample for `object` held in `grasp` (sampled on demand).
+  bool canPlace(int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();
 

@@ -30,6 +30,12 @@ const Vector3d kUp = Vector3d::UnitZ();
 constexpr double kFingerOpen = core::kHandeMaxOpening / 2;
 /// Width of a Hand-E standard fingertip across the closing axis (reference S5; the URDF's tip box).
 constexpr double kFingertipWidth = 0.0292;
+/// How far the Hand-E housing's front face lies behind the TCP: TCP 132.5 mm, face 86.1 mm
+/// from the mounting face (the URDF's housing box, reference S4/S5).
+constexpr double kHousingBehindTcp = 0.1325 - 0.0861;
+/// Room kept between two grippers' fingertips along an object, and between a held object and
+/// the housing [m] (above twice the collision margin).
+constexpr double kHandoffClearance = 0.005;
 /// Handoff orientations of the giver's TCP: approach axis towards the receiver, level or
 /// pitched 45 degrees down, turned about itself by multiples of 90 degrees.
 constexpr std::array<double, 2> kHandoffPitches{0.0, std::numbers::pi / 4};
@@ -122,16 +128,32 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
 /// closing along the giver's approach axis). This is the handoff that holds in simulation (the
 /// scripted-plan tool's: giver level, receiver from above): a receiver coming head-on lost the
 /// cube when the giver withdrew, and one coming along the giver's closing axis had its housing
-/// next to a giver finger, which touched it when the giver opened. Fixed order, no repeats.
+/// next to a giver finger, which touched it when the giver opened.
+/// On a long object (the shelf items) the receiver may also come head-on, against the giver's
+/// approach, closing on the giver's face pair, where the two pairs of fingertips sit apart
+/// along the object's length (the pads' width axis of both): the giver at one end, the receiver
+/// in the middle or at the other end. The receiver then ends with a side grasp it can slide
+/// into a shelf. Grasps whose object would reach back into the receiver's housing are left out
+/// (an end-on grasp of a tall item with the TCP at its centre). Fixed order, no repeats.
 std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver) {
   const Vector3d giver_closing = giver.X_OT.linear().col(0);
+  const Vector3d giver_width = giver.X_OT.linear().col(1);
   const Vector3d giver_approach = giver.X_OT.linear().col(2);
   std::vector<Grasp> grasps;
   for (int k = 0; k < 3; ++k) {
     for (const bool up : {true, false}) {
       for (const Grasp& grasp : graspsOf(relabel(size, k, up), size, true)) {
         const Vector3d approach = grasp.X_OT.linear().col(2);
-        if (std::abs(approach.dot(giver_closing)) > 0.5 || std::abs(approach.dot(giver_approach)) > 0.5) continue;
+        // how far the object reaches back from the TCP, towards the housing
+        const double behind = 0.5 * size.dot(approach.cwiseAbs()) - grasp.X_OT.translation().dot(approach);
+        if (behind > kHousingBehindTcp - kHandoffClearance) continue;
+        const bool across =
+            std::abs(approach.dot(giver_closing)) <= 0.5 && std::abs(approach.dot(giver_approach)) <= 0.5;
+        const bool head_on = approach.dot(giver_approach) < -0.5 &&
+                             std::abs(grasp.X_OT.linear().col(1).dot(giver_width)) > 0.5 &&
+                             std::abs((grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_width)) >=
+                                 kFingertipWidth + kHandoffClearance;
+        if (!across && !head_on) continue;
         const auto same = [&grasp](const Grasp& other) { return sameGrasp(grasp, other); };
         if (std::none_of(grasps.begin(), grasps.end(), same)) grasps.push_back(grasp);
       }
