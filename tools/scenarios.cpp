@@ -49,6 +49,9 @@ constexpr double kCubeEdge = 0.04;     // [m], Hand-E opens to 50 mm
 // Shelf items stand 120 mm tall, so a gripper coming in from the side holds them high enough
 // for its 75 mm wide body to clear the shelf board (core/grasps.h).
 const Eigen::Vector3d kShelfItemSize(0.04, 0.04, 0.12);
+// Shelf items start at least this far from a robot's base axis [m]: an item 0.17 m from it
+// (generator seed 10) had no collision-free grasp for either robot.
+constexpr double kShelfBaseClearance = 0.25;
 constexpr double kCubeMass = 0.1;      // [kg]
 constexpr double kCubeFriction = 0.8;
 constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice cell per axis
@@ -378,6 +381,13 @@ core::World generateShelving(const ShelvingParams& params) {
   std::vector<Eigen::Vector2d> cells =
       zoneCells({{0.0, 0.0}, {1.0, 0.0}, 0.2, 0.38, -0.6, 0.6});
   rng.shuffle(cells);
+  // ... not so close to a base that its arm cannot fold down to the object (after the shuffle,
+  // so that the other cells keep their order)
+  std::erase_if(cells, [&](const Eigen::Vector2d& cell) {
+    return std::any_of(world.robots.begin(), world.robots.end(), [&](const core::RobotSpec& robot) {
+      return (cell - robot.X_WBase.translation().head<2>()).norm() < kShelfBaseClearance;
+    });
+  });
 
   const ClassInfo green = classInfo(1);
   const ClassInfo blue = classInfo(2);

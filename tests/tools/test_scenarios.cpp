@@ -223,6 +223,11 @@ TEST_CASE("shelving: pairs of back and front slots", "[scenarios]") {
       REQUIRE(dut.objects.size() == static_cast<std::size_t>(objects));
       REQUIRE(dut.goals.size() == static_cast<std::size_t>(objects));
       CHECK(minCentreSpacing(dut) >= kMinCubeSpacing - 1e-12);
+      for (const core::ObjectSpec& object : dut.objects) {
+        for (const core::RobotSpec& robot : dut.robots) {  // room for the arm to reach down
+          CHECK((object.X_WO.translation() - robot.X_WBase.translation()).head<2>().norm() > 0.23);
+        }
+      }
       std::set<std::string> used_regions;
       for (int k = 0; k < objects / 2; ++k) {
         const core::Goal& back = dut.goals[2 * k];
