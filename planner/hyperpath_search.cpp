@@ -122,11 +122,10 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
         before = costToGo(o, ts.holdingVertex(arc.robot, o));
         after = costToGo(o, ts.holdingVertex(arc.receiver, o));
         if (after == kUnreachable || before == kUnreachable) continue;
-        // only towards the goal, unless the giver cannot place the object in the grasp it
-        // holds (the cost to go is a lower bound over all grasps: a place hyperarc with no
-        // sample yet counts with the dwell and would keep the object in a hand that cannot
-        // place it)
-        if (after >= before && canPlace(arc.robot, o, grasp)) continue;
+        // only towards the goal, unless the giver has a place hyperarc but no sample of it for
+        // the grasp it holds (the cost to go is a lower bound over all grasps and would keep
+        // the object in a hand that cannot place it)
+        if (after >= before && !placeBlocked(arc.robot, o, grasp)) continue;
         break;
     }
     for (const int id : graph_->transitionsOf(static_cast<int>(h), grasp)) {
@@ -144,15 +143,15 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
   return result;
 }
 
-bool HyperpathSearch::canPlace(int robot, int object, int grasp) const {
+bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = ts.hyperarcs()[h];
     if (arc.kind == TransitionKind::kPlace && arc.robot == robot && arc.object == object) {
-      return !graph_->transitionsOf(static_cast<int>(h), grasp).empty();
+      return graph_->transitionsOf(static_cast<int>(h), grasp).empty();
     }
   }
-  return false;
+  return false;  // no place hyperarc: the cost to go says where the object should go
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
@@ -285,7 +284,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
       if (arc.kind == TransitionKind::kHandoff) {
         const Millis before = costToGo(arc.object, ts.holdingVertex(r, arc.object));
         const Millis after = costToGo(arc.object, ts.holdingVertex(arc.receiver, arc.object));
-        ok = after != kUnreachable && (after < before || !canPlace(r, arc.object, history.robots[r].grasp)) &&
+        ok = after != kUnreachable && (after < before || placeBlocked(r, arc.object, history.robots[r].grasp)) &&
              (history.robots[arc.receiver].object == -1 || progresses[arc.receiver]);
       }
       if (ok && available(h, history.robots[r].grasp)) progresses[r] = changed = true;

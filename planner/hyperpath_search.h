@@ -90,8 +90,9 @@ class HyperpathSearch {
   /// The history holds a transition that a scheduling constraint pairs with `transition`.
   bool excluded(const TransitionHistory& history, int transition) const;
   bool deadlocked(const TransitionHistory& history) const;
-  /// Whether `robot` has a place sample for `object` held in `grasp` (sampled on demand).
-  bool canPlace(int robot, int object, int grasp) const;
+  /// `robot` has a place hyperarc for `object` but no sample of it for `grasp` (sampled on
+  /// demand).
+  bool placeBlocked(int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();
 
