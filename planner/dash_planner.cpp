@@ -1,7 +1,9 @@
 #include "planner/dash_planner.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <limits>
+#include <sstream>
 #include <stdexcept>
 
 #include "planner/hyperpath_search.h"
@@ -14,6 +16,13 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
+
+/// "12.34 s"
+std::string secondsText(Millis t) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2) << toSeconds(t) << " s";
+  return out.str();
+}
 
 /// Why an object can never reach its goal in the task-space hypergraph, or "".
 std::string unreachableReason(const core::World& world, const TaskSpaceHypergraph& ts, const HyperpathSearch& search,
@@ -72,6 +81,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   PlannerStats& stats = result.stats;
   const Clock::time_point started = Clock::now();
   const auto time_up = [&] { return budget.deadline && Clock::now() >= *budget.deadline; };
+  const auto say = [&](const std::string& line) {
+    if (budget.progress) budget.progress(line);
+  };
 
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
   const double task_space_seconds = secondsSince(started);
@@ -136,18 +148,24 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     const ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
     stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
     stats.conflict_nodes += resolved.nodes;
+    const std::string nodes = " (" + std::to_string(resolved.nodes) + " nodes)";
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
-      if (feedbacks >= settings.scheduling_constraints_per_round) return false;
-      for (const auto& [a, b] : resolved.unordered) {
-        if (graph->addSchedulingConstraint(a, b)) {
-          ++feedbacks;
-          ++stats.scheduling_constraints;
-          return true;
+      if (feedbacks < settings.scheduling_constraints_per_round) {
+        for (const auto& [a, b] : resolved.unordered) {
+          if (graph->addSchedulingConstraint(a, b)) {
+            ++feedbacks;
+            ++stats.scheduling_constraints;
+            say(last_failure + nodes + "; scheduling constraint on transitions " + std::to_string(a) + " and " +
+                std::to_string(b));
+            return true;
+          }
         }
       }
+      say(last_failure + nodes);
       return false;
     }
+    say("conflict resolution: makespan " + secondsText(resolved.schedule->makespan) + nodes);
     if (resolved.schedule->makespan < best) {
       best = resolved.schedule->makespan;
       best_history = history;
@@ -164,23 +182,32 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     SearchResult found = query();
     stats.search_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
     stats.expansions += found.expansions;
+    const char* status[] = {"found a task plan", "found none", "ran out of its budget"};
+    std::string line = std::string(status[static_cast<int>(found.status)]) + " after " +
+                       std::to_string(found.expansions) + " expansions";
+    if (found.plan) line += ", optimistic makespan " + secondsText(found.plan->makespan());
+    say(line);
     return found;
   };
 
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
     feedbacks = 0;
+    say("round " + std::to_string(round) + ": " + std::to_string(graph->numTransitions()) + " transitions, " +
+        std::to_string(graph->numMoves()) + " moves");
     // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at
     // home; a new scheduling constraint starts the queries again
     for (bool again = true; again && !best_schedule && !time_up();) {
       again = false;
       for (const bool park : {false, true}) {
         HyperpathSearch query(*graph, park);
-        SearchBudget budget = search_budget;
+        say(std::string("greedy query") + (park ? ", idle robots parking at home" : "") + ", " +
+            std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
+        SearchBudget query_budget = search_budget;
         if (graph->numSchedulingConstraints() > 0) {
-          budget.max_expansions = std::min(budget.max_expansions, settings.constrained_search_expansions);
+          query_budget.max_expansions = std::min(query_budget.max_expansions, settings.constrained_search_expansions);
         }
-        const SearchResult greedy = search_timed([&] { return query.greedy(budget); });
+        const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
         if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan);
         if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
         if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
@@ -188,6 +215,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           // a pair conflict resolution could not order in one history may be ordered in
           // another: constraints that leave no task plan (within the budget) are dropped
           if (graph->numSchedulingConstraints() > 0) {
+            say("scheduling constraints dropped");
             graph->clearSchedulingConstraints();
             again = true;
             break;

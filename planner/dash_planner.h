@@ -22,6 +22,7 @@
 
 #include <chrono>
 #include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 
@@ -50,9 +51,11 @@ struct PlannerSettings {
   RepresentationSettings representation;
 };
 
-/// A wall-clock deadline (std::nullopt: none; iteration caps still apply).
+/// A wall-clock deadline (std::nullopt: none; iteration caps still apply), and where to report
+/// progress (each query, conflict resolution and round, one line each; may be empty).
 struct PlannerBudget {
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  std::function<void(const std::string&)> progress;
 };
 
 struct PlannerStats {

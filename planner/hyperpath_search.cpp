@@ -42,7 +42,10 @@ constexpr std::size_t kAStarSamplesPerHyperarc = 2;
 }  // namespace
 
 HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
-    : graph_(&graph), park_at_home_(park_at_home) {
+    : graph_(&graph), park_at_home_(park_at_home), final_occupancy_(graph.sites().numSites()) {
+  for (int o = 0; o < graph.sites().numObjects(); ++o) {
+    final_occupancy_.set(graph.sites().goal[o] ? ObjectSites::goalSite(o) : ObjectSites::startSite(o));
+  }
   updateCostToGo();
 }
 HyperpathSearch::~HyperpathSearch() = default;
@@ -120,12 +123,7 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
         if (robot.object != o || history.robots[arc.receiver].object != -1) continue;
         grasp = robot.grasp;
         before = costToGo(o, ts.holdingVertex(arc.robot, o));
-        after = costToGo(o, ts.holdingVertex(arc.receiver, o));
-        if (after == kUnreachable || before == kUnreachable) continue;
-        // only towards the goal, unless the giver has a place hyperarc but no sample of it for
-        // the grasp it holds (the cost to go is a lower bound over all grasps and would keep
-        // the object in a hand that cannot place it)
-        if (after >= before && !placeBlocked(arc.robot, o, grasp)) continue;
+        if (before == kUnreachable || !handoffAllowed(history, arc)) continue;
         break;
     }
     for (const int id : graph_->transitionsOf(static_cast<int>(h), grasp)) {
@@ -141,6 +139,27 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     }
   }
   return result;
+}
+
+bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const TransitionHyperarc& arc) const {
+  const TaskSpaceHypergraph& ts = graph_->taskSpace();
+  const int o = arc.object;
+  const Millis before = costToGo(o, ts.holdingVertex(arc.robot, o));
+  const Millis after = costToGo(o, ts.holdingVertex(arc.receiver, o));
+  if (after == kUnreachable) return false;
+  if (after < before) return true;
+  // away from the goal only out of a hand that cannot place the object, and never back to a
+  // robot that held it before (the two would hand it back and forth)
+  if (!placeBlocked(arc.robot, o, history.robots[arc.robot].grasp)) return false;
+  return std::none_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
+    const TransitionSample& sample = graph_->transition(step.transition).sample;
+    return sample.object == o && sample.kind != TransitionKind::kPlace && sample.motions.back().robot == arc.receiver;
+  });
+}
+
+bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) {
+  const core::ArmConfig& home = graph_->world().world->robots[static_cast<std::size_t>(robot)].home;
+  return q == home || graph_->move(robot, -1, -1, q, home, final_occupancy_) != nullptr;
 }
 
 bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
@@ -163,6 +182,9 @@ bool HyperpathSearch::excluded(const TransitionHistory& history, int transition)
 std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory& history, const Candidate& candidate) {
   const MotionTransition& transition = graph_->transition(candidate.transition);
   const TransitionSample& sample = transition.sample;
+  if (sample.kind == TransitionKind::kPlace && !homeReachable(sample.motions[0].robot, sample.motions[0].end())) {
+    return std::nullopt;
+  }
   const ObjectSites& sites = graph_->sites();
   const SiteSet occupied = history.occupied(sites.numSites());
   const int o = sample.object;
@@ -282,9 +304,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
       if (progresses[r] || history.robots[r].object != arc.object || arc.kind == TransitionKind::kPick) continue;
       bool ok = arc.kind == TransitionKind::kPlace;
       if (arc.kind == TransitionKind::kHandoff) {
-        const Millis before = costToGo(arc.object, ts.holdingVertex(r, arc.object));
-        const Millis after = costToGo(arc.object, ts.holdingVertex(arc.receiver, arc.object));
-        ok = after != kUnreachable && (after < before || placeBlocked(r, arc.object, history.robots[r].grasp)) &&
+        ok = handoffAllowed(history, arc) &&
              (history.robots[arc.receiver].object == -1 || progresses[arc.receiver]);
       }
       if (ok && available(h, history.robots[r].grasp)) progresses[r] = changed = true;

@@ -15,12 +15,15 @@
 // still hold histories that break it: start a new query).
 //
 // Route pruning. An object is only moved along its task-space route: picked by a robot from
-// which its goal can be reached, handed to a robot nearer its goal (by the cost-to-go below).
-// A history is abandoned when a holding robot cannot progress: it has no place or handoff
-// sample for the grasp it holds the object in that keeps clear of the goal sites filled so
-// far, or holding robots wait on each other in a cycle (each needs to hand its object to
-// another holding robot); and when its last place took a goal site that every place sample of
-// another object touches (a front slot filled before its back one).
+// which its goal can be reached, handed to a robot nearer its goal (by the cost-to-go below)
+// or, out of a hand that cannot place it, to one that has not held it yet. A place is only
+// taken when its robot can go home afterwards around every object where the plan leaves them
+// (every plan ends with the moves home; a place deep in a shelf can leave the arm where the
+// roadmap cannot get it out). A history is abandoned when a holding robot cannot progress: it
+// has no place or handoff sample for the grasp it holds the object in that keeps clear of the
+// goal sites filled so far, or holding robots wait on each other in a cycle (each needs to
+// hand its object to another holding robot); and when its last place took a goal site that
+// every place sample of another object touches (a front slot filled before its back one).
 //
 // Cost-to-go (the A*-like query's heuristic): for each object and task-space vertex, the
 // cheapest sum of sampled transition durations to its goal on the task-space hypergraph
@@ -90,6 +93,12 @@ class HyperpathSearch {
   /// The history holds a transition that a scheduling constraint pairs with `transition`.
   bool excluded(const TransitionHistory& history, int transition) const;
   bool deadlocked(const TransitionHistory& history) const;
+  /// The handoff hyperarc `arc` may take the object from its giver: towards the goal (by the
+  /// cost to go), or away from it out of a hand that cannot place it (placeBlocked) to a robot
+  /// that has not held it before.
+  bool handoffAllowed(const TransitionHistory& history, const TransitionHyperarc& arc) const;
+  /// `robot` can go home from `q` once every object is where the plan leaves it.
+  bool homeReachable(int robot, const core::ArmConfig& q);
   /// `robot` has a place hyperarc for `object` but no sample of it for `grasp` (sampled on
   /// demand).
   bool placeBlocked(int robot, int object, int grasp) const;
@@ -98,6 +107,7 @@ class HyperpathSearch {
 
   MotionHypergraph* graph_;
   bool park_at_home_;
+  SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
   std::unique_ptr<AStarState> astar_;
 };

@@ -47,6 +47,7 @@ void RepresentationSettings::validate() const {
   require(handoff_samples_per_round >= 1, "handoff_samples_per_round", "must be >= 1");
   require(move_growth_attempts >= 0, "move_growth_attempts", "must be >= 0");
   require(move_growth_samples >= 1, "move_growth_samples", "must be >= 1");
+  require(move_growth_spread > 0.0, "move_growth_spread", "must be > 0");
   require(velocity_fraction > 0.0 && velocity_fraction <= 1.0, "velocity_fraction", "must be in (0, 1]");
   require(max_acceleration > 0.0, "max_acceleration", "must be positive");
   collision.validate();
@@ -205,8 +206,12 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
   if (a >= 0 && b >= 0) path = a == b ? std::vector<core::ArmConfig>{from} : map.query(a, b, occupied);
   // a roadmap that does not connect them yet grows a little on the spot
   int& grown = grown_this_round_[std::make_tuple(robot, object, grasp)];
+  // (uniformly, and near both ends: one of them may sit in a pocket, e.g. the arm in a shelf)
   while (!path && a >= 0 && b >= 0 && grown < settings_.move_growth_attempts * settings_.move_growth_samples) {
-    map.grow(settings_.move_growth_samples);
+    const int near = settings_.move_growth_samples / 4;
+    map.grow(settings_.move_growth_samples - 2 * near);
+    map.growNear(from, near, settings_.move_growth_spread);
+    map.growNear(to, near, settings_.move_growth_spread);
     grown += settings_.move_growth_samples;
     path = map.query(a, b, occupied);
   }

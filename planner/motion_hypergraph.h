@@ -53,7 +53,8 @@ struct RepresentationSettings {
   /// When a move query finds no path, its roadmap grows by move_growth_samples and the query
   /// is repeated; a roadmap grows so at most move_growth_attempts times per round.
   int move_growth_attempts = 3;
-  int move_growth_samples = 30;
+  int move_growth_samples = 30;        ///< half uniform, a quarter near each end of the query
+  double move_growth_spread = 0.5;     ///< joint range of the samples near an end [rad]
   double velocity_fraction = 0.6;      ///< move speed cap, fraction of each joint's velocity limit
   double max_acceleration = 4.0;       ///< move acceleration cap for every joint [rad/s^2]
   TransitionSettings transitions;

@@ -394,6 +394,27 @@ int Roadmap::grow(int samples) {
   return added;
 }
 
+int Roadmap::growNear(const core::ArmConfig& center, int samples, double spread) {
+  Impl& m = *impl_;
+  int added = 0;
+  for (int n = 0; n < samples; ++n) {
+    for (int draw = 0; draw < 100; ++draw) {
+      core::ArmConfig q;
+      for (int j = 0; j < 6; ++j) {
+        // within the sampled range, widened to reach the centre (a configuration IK gave
+        // outside +-pi)
+        const double lo = std::min(m.sample_lower[j], center[j]), hi = std::max(m.sample_upper[j], center[j]);
+        q[j] = std::clamp(center[j] + spread * (2.0 * uniform01(m.rng) - 1.0), lo, hi);
+      }
+      if (!m.configurationFree(q)) continue;
+      m.addNode(q);
+      ++added;
+      break;
+    }
+  }
+  return added;
+}
+
 int Roadmap::addConfiguration(const core::ArmConfig& q) {
   if (const auto it = impl_->node_ids.find(q); it != impl_->node_ids.end()) return it->second;
   if (!impl_->configurationFree(q)) return -1;

@@ -62,6 +62,11 @@ class Roadmap {
   /// Gives up on a sample after 100 rejected draws. Returns the number added.
   int grow(int samples);
 
+  /// Like grow(), with each joint drawn within +-spread [rad] of `center`'s (and the sampled
+  /// range): nodes in the pocket of a configuration that uniform samples rarely reach, such as
+  /// an arm reaching into a shelf.
+  int growNear(const core::ArmConfig& center, int samples, double spread);
+
   /// Adds q as a node connected to its nearest neighbours and returns its id, or -1 when q
   /// collides with the static scene. Adding the same configuration twice returns the same id.
   int addConfiguration(const core::ArmConfig& q);

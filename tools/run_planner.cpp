@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <iomanip>
+#include <iostream>
 #include <sstream>
 
 #include "tools/commands.h"
@@ -22,8 +23,15 @@ planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoic
   settings.seed = choice.seed;
   settings.max_rounds = choice.max_rounds;
   planner::PlannerBudget budget;
-  budget.deadline = std::chrono::steady_clock::now() +
-                    std::chrono::duration_cast<std::chrono::steady_clock::duration>(std::chrono::duration<double>(choice.time_budget));
+  const auto started = std::chrono::steady_clock::now();
+  budget.deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                  std::chrono::duration<double>(choice.time_budget));
+  if (choice.verbose) {
+    budget.progress = [started](const std::string& line) {
+      const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
+      std::cerr << "[" << std::fixed << std::setprecision(2) << std::setw(7) << t << " s] " << line << "\n";
+    };
+  }
   return planner::solve(world, settings, budget);
 }
 

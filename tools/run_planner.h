@@ -29,9 +29,10 @@ struct PlannerChoice {
   std::uint64_t seed = 1;         ///< sampling seed: same world, method and seed give the same plan
   double time_budget = 120.0;     ///< wall-clock budget [s]; status timeout beyond it
   int max_rounds = 30;            ///< representation expansion rounds before giving up (timeout)
+  bool verbose = false;           ///< the planner's progress on stderr
 };
 
-/// Adds --method, --seed, --time-budget and --max-rounds to a command.
+/// Adds --method, --seed, --time-budget, --max-rounds and --verbose to a command.
 void addPlannerOptions(CLI::App& command, PlannerChoice& choice);
 
 /// Runs the DaSH planner on `world`. Throws std::invalid_argument for a bad choice (unknown
