@@ -21,7 +21,8 @@ struct LoadedWorld {
 /// Throws WorldError with file, line and field for any problem.
 LoadedWorld loadWorld(const std::filesystem::path& file);
 
-/// The same for a world already in memory (e.g. from a scenario generator).
+/// The same for a world already in memory (e.g. from a scenario generator). A world whose
+/// fixtures have no derived geometry yet gets it first (deriveFixtureGeometry), as parsing does.
 LoadedWorld validateWorld(World world);
 
 }  // namespace dashbed::core

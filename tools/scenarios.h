@@ -5,7 +5,8 @@
 //
 // A generator returns the written part of a world (robots, fixtures, written regions,
 // objects, goals); the derived parts (fixture boxes, bin regions, shelf surfaces) are made by
-// the world loader, so `parseWorldYaml(writeWorldYaml(generate(p)))` is the full world.
+// the world loader, so `parseWorldYaml(writeWorldYaml(generate(p)))` and
+// `validateWorld(generate(p))` give the full world.
 // Determinism: the same parameters give the same World and the same YAML bytes on every
 // platform (the random numbers come from std::mt19937_64, whose output the standard fixes,
 // through our own uniform-double, integer-in-range and shuffle functions).

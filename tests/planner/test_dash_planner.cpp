@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <cctype>
+#include <iomanip>
 #include <map>
 #include <sstream>
 #include <set>
@@ -57,10 +58,21 @@ TEST_CASE("greedy DaSH plans the default world into valid collision-free chains"
 TEST_CASE("the same seed gives a byte-identical plan", "[planner][dash]") {
   const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
   const PlanResult a = solve(world, testSettings());
-  const PlanResult b = solve(world, testSettings());
+  // the second with a progress log, which must not change the plan
+  std::vector<std::string> progress;
+  PlannerBudget budget;
+  budget.progress = [&](const std::string& line) { progress.push_back(line); };
+  const PlanResult b = solve(world, testSettings(), budget);
   REQUIRE(a.plan);
   REQUIRE(b.plan);
   CHECK(core::writePlanJson(*a.plan) == core::writePlanJson(*b.plan));
+  std::ostringstream makespan;
+  makespan << std::fixed << std::setprecision(2) << b.stats.makespan << " s";
+  REQUIRE(progress.size() >= 4);
+  CHECK_THAT(progress[0], Contains("round 1: "));
+  CHECK_THAT(progress[1], Contains("greedy query"));
+  CHECK_THAT(progress[2], Contains("found a task plan after"));
+  CHECK_THAT(progress.back(), Contains("conflict resolution: makespan " + makespan.str()));
 }
 
 TEST_CASE("a cube no robot can reach makes the problem infeasible and is named", "[planner][dash]") {

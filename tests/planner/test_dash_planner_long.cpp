@@ -10,6 +10,7 @@
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
 #include "planner/hyperpath_search.h"
+#include "tools/scenarios.h"
 #include "tests/planner/dash_test_support.h"
 #include "tests/planner/plan_checks.h"
 
@@ -55,9 +56,13 @@ TEST_CASE("shelving task plans fill the back slot before the front slot in front
 
 TEST_CASE("shelving plans solve end to end, back slots first, with conflicts fed back to the search",
           "[planner][dash][shelf]") {
-  const core::LoadedWorld world = core::loadWorld(worldPath("shelf_2r_4o.yaml"));
+  // generator seed 1 (the file), and seed 5: there r1 reaches its front slot only with the arm
+  // along the shelf, and the robot-alone roadmap has to grow into the shelf to get it home
+  const std::uint64_t seed = GENERATE(1, 5);
+  const core::LoadedWorld world = seed == 1 ? core::loadWorld(worldPath("shelf_2r_4o.yaml"))
+                                            : core::validateWorld(tools::generateShelving({4, seed}));
   PlannerSettings settings = testSettings();
-  settings.seed = 1;
+  settings.seed = seed;
   const PlanResult result = solve(world, settings);
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
@@ -68,7 +73,14 @@ TEST_CASE("shelving plans solve end to end, back slots first, with conflicts fed
     if (a.type == core::ActionType::kPlace) placed_at[a.region] = a.start;
   }
   REQUIRE(placed_at.size() == world.world->objects.size());
-  for (const std::string slot : {"slot_1", "slot_3"}) CHECK(placed_at.at(slot + "_back") < placed_at.at(slot + "_front"));
+  int pairs = 0;
+  for (const auto& [region, start] : placed_at) {
+    const auto front = region.find("_front");
+    if (front == std::string::npos) continue;
+    ++pairs;
+    CHECK(placed_at.at(region.substr(0, front) + "_back") < start);
+  }
+  CHECK(pairs == 2);
 }
 
 TEST_CASE("three robots in a layout of their own get valid collision-free plans", "[planner][dash]") {

@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <cmath>
 #include <numbers>
 #include <optional>
 #include <span>
@@ -255,6 +256,29 @@ TEST_CASE("Roadmap queries between unconnected nodes give no path", "[planner][r
     REQUIRE(roadmap.numEdges() == 0);
     CHECK_FALSE(roadmap.query(a, b, noSites()));
   }
+}
+
+TEST_CASE("Roadmap growth near a configuration stays within the spread of it", "[planner][roadmap]") {
+  const ArmConfig centre = r0TcpDownAt(cubeCentre() + Vector3d(0.0, 0.0, 0.12));
+  Roadmap roadmap(sortingScene(), sortingSites(), 0, std::nullopt, kOpen, 3);
+  REQUIRE(roadmap.growNear(centre, 20, 0.3) == 20);
+  REQUIRE(roadmap.numNodes() == 20);
+  bool some_away = false;
+  for (int id = 0; id < roadmap.numNodes(); ++id) {
+    const ArmConfig& q = roadmap.node(id);
+    for (int j = 0; j < 6; ++j) {
+      CHECK(std::abs(q[j] - centre[j]) <= 0.3 + 1e-12);
+      some_away |= std::abs(q[j] - centre[j]) > 0.05;
+    }
+  }
+  CHECK(some_away);
+  // every node is free against the static scene: adding it again returns its id
+  for (int id = 0; id < roadmap.numNodes(); ++id) CHECK(roadmap.addConfiguration(roadmap.node(id)) == id);
+  // a pose into the table gives no free sample near it within a tiny spread
+  ArmConfig into_table = sortingWorld().world->robots[0].home;
+  into_table[1] = 0.3;
+  CHECK(roadmap.growNear(into_table, 3, 1e-3) == 0);
+  CHECK(roadmap.numNodes() == 20);
 }
 
 TEST_CASE("Site sets", "[planner][roadmap]") {
