@@ -663,6 +663,18 @@ struct CheckerState {
     return false;
   }
 
+  /// One resting object against the robot's bodies and its held object (as objectCollision).
+  bool oneObjectCollision(Slot& slot, const RestingObject& resting, Frame& X_WO_resting) {
+    if (slot.holding && resting.object == slot.held_object) return false;
+    const RobotData& robot = *slot.robot;
+    const ObjectData& data = scene->objects[resting.object];
+    const Placed object{ShapeType::kBox, data.box.get(), &X_WO_resting, &data.half, data.radius};
+    for (std::size_t b = robot.bodies.size(); b-- > 0;) {
+      if (bodyHits(slot, static_cast<int>(b), object)) return true;
+    }
+    return slot.holding && shapesCollide(placedHeld(slot), object);
+  }
+
   bool robotCollision(Slot& slot, std::span<const RestingObject> objects) {
     return staticCollision(slot) || selfCollision(slot) || objectCollision(slot, objects);
   }
@@ -1175,6 +1187,13 @@ double CollisionScene::jointTravelRadius(int robot, int q_index) const {
 
 int CollisionScene::motionSteps(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                 const std::optional<HeldObject>& held) const {
+  const double travel = motionTravel(robot, q_from, q_to, held);
+  const double steps = std::ceil(travel / data_->settings.motion_step - 1e-9);
+  return std::max(1, static_cast<int>(std::min(steps, 1e9)));
+}
+
+double CollisionScene::motionTravel(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                                    const std::optional<HeldObject>& held) const {
   const RobotData& data = requireRobot(*data_, robot);
   requireConfiguration(data, q_from, "q_from");
   requireConfiguration(data, q_to, "q_to");
@@ -1192,8 +1211,7 @@ int CollisionScene::motionSteps(int robot, const Eigen::VectorXd& q_from, const 
     }
     travel += weight * std::abs(q_to[body.q_index] - q_from[body.q_index]);
   }
-  const double steps = std::ceil(travel / data_->settings.motion_step - 1e-9);
-  return std::max(1, static_cast<int>(std::min(steps, 1e9)));
+  return travel;
 }
 
 // ================================================================================================
@@ -1244,6 +1262,131 @@ bool CollisionChecker::robotsFree(int robot_a, const Eigen::VectorXd& q_a, const
   return !state_->interRobotCollision(state_->slots[robot_a], state_->slots[robot_b]);
 }
 
+namespace {
+
+/// A capsule in W: the points within `r` of the segment p + s d, s in [0, 1].
+struct Capsule {
+  Eigen::Vector3d p;
+  Eigen::Vector3d d;
+  double r;
+};
+
+/// A capsule holding a placed shape: a cylinder's axis, a box's longest axis (radius: the
+/// half diagonal across it), a sphere's centre.
+Capsule capsuleAround(ShapeType type, const detail::Frame& X_WS, const Vector3d& half) {
+  switch (type) {
+    case ShapeType::kCylinder: {
+      const Vector3d axis = X_WS.R.col(2) * half.z();
+      return {X_WS.p - axis, 2.0 * axis, half.x()};
+    }
+    case ShapeType::kBox: {
+      int i = 0;
+      half.maxCoeff(&i);
+      const Vector3d axis = X_WS.R.col(i) * half[i];
+      const double r = std::hypot(half[(i + 1) % 3], half[(i + 2) % 3]);
+      return {X_WS.p - axis, 2.0 * axis, r};
+    }
+    case ShapeType::kSphere:
+      break;
+  }
+  return {X_WS.p, Vector3d::Zero(), half.x()};
+}
+
+/// Distance between the segments p1 + s d1 and p2 + t d2 (s, t in [0, 1]): the closest points
+/// by minimising over s and t with clamping.
+double segmentDistance(const Vector3d& p1, const Vector3d& d1, const Vector3d& p2, const Vector3d& d2) {
+  constexpr double kTiny = 1e-18;
+  const Vector3d r = p1 - p2;
+  const double a = d1.squaredNorm(), e = d2.squaredNorm(), f = d2.dot(r);
+  double s = 0.0, t = 0.0;
+  if (a <= kTiny && e <= kTiny) {
+    return r.norm();
+  }
+  if (a <= kTiny) {
+    t = std::clamp(f / e, 0.0, 1.0);
+  } else {
+    const double c = d1.dot(r);
+    if (e <= kTiny) {
+      s = std::clamp(-c / a, 0.0, 1.0);
+    } else {
+      const double b = d1.dot(d2);
+      const double denom = a * e - b * b;
+      s = denom > kTiny * a * e ? std::clamp((b * f - c * e) / denom, 0.0, 1.0) : 0.0;
+      t = (b * s + f) / e;
+      if (t < 0.0) {
+        t = 0.0;
+        s = std::clamp(-c / a, 0.0, 1.0);
+      } else if (t > 1.0) {
+        t = 1.0;
+        s = std::clamp((b - c) / a, 0.0, 1.0);
+      }
+    }
+  }
+  return (p1 + s * d1 - (p2 + t * d2)).norm();
+}
+
+}  // namespace
+
+double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a,
+                                         const std::optional<HeldObject>& held_a, int robot_b,
+                                         const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b) {
+  if (!robotsFree(robot_a, q_a, held_a, robot_b, q_b, held_b)) return -1.0;
+  const detail::SceneData& scene = *scene_->data_;
+  auto& state = *state_;
+  // Per robot, groups of capsules holding its shapes: one per body with shapes (with the
+  // body's bounding sphere, to skip groups that cannot come closer than the best so far), and
+  // one for the held object.
+  struct Group {
+    Vector3d c;
+    double r;
+    bool moves;
+    std::size_t begin, end;  // into the capsules
+  };
+  const auto collect = [&](detail::CheckerState::Slot& slot, std::vector<Group>& groups, std::vector<Capsule>& capsules) {
+    groups.clear();
+    capsules.clear();
+    const RobotData& robot = *slot.robot;
+    for (std::size_t b = 0; b < robot.bodies.size(); ++b) {
+      const Body& body = robot.bodies[b];
+      if (body.radius < 0.0) continue;
+      const std::size_t begin = capsules.size();
+      for (int k = body.shape_begin; k < body.shape_end; ++k) {
+        const Shape& shape = robot.shapes[k];
+        capsules.push_back(capsuleAround(shape.type, state.shapePose(slot, k), shape.half));
+      }
+      groups.push_back({slot.c_WB[b], body.radius, body.moves, begin, capsules.size()});
+    }
+    if (slot.holding) {
+      const detail::ObjectData& object = scene.objects[slot.held_object];
+      capsules.push_back(capsuleAround(ShapeType::kBox, slot.X_WH, object.half_grown));
+      groups.push_back({slot.X_WH.p, object.radius_grown, true, capsules.size() - 1, capsules.size()});
+    }
+  };
+  std::vector<Group> groups_a, groups_b;
+  std::vector<Capsule> capsules_a, capsules_b;
+  groups_a.reserve(16);
+  groups_b.reserve(16);
+  capsules_a.reserve(32);
+  capsules_b.reserve(32);
+  collect(state.slots[robot_a], groups_a, capsules_a);
+  collect(state.slots[robot_b], groups_b, capsules_b);
+  double gap = std::numeric_limits<double>::infinity();
+  for (const auto& x : groups_a) {
+    for (const auto& y : groups_b) {
+      if (!x.moves && !y.moves) continue;
+      if ((x.c - y.c).norm() - x.r - y.r >= gap) continue;
+      for (std::size_t i = x.begin; i < x.end; ++i) {
+        const Capsule& u = capsules_a[i];
+        for (std::size_t j = y.begin; j < y.end; ++j) {
+          const Capsule& v = capsules_b[j];
+          gap = std::min(gap, segmentDistance(u.p, u.d, v.p, v.d) - u.r - v.r);
+        }
+      }
+    }
+  }
+  return std::max(gap, 0.0);
+}
+
 bool CollisionChecker::motionFree(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                   std::span<const RestingObject> objects, const std::optional<HeldObject>& held) {
   const detail::SceneData& scene = *scene_->data_;
@@ -1260,6 +1403,78 @@ bool CollisionChecker::motionFree(int robot, const Eigen::VectorXd& q_from, cons
     if (state.robotCollision(slot, objects)) return false;
   }
   return true;
+}
+
+std::vector<char> CollisionChecker::motionObjectHits(int robot, const Eigen::VectorXd& q_from,
+                                                     const Eigen::VectorXd& q_to,
+                                                     std::span<const RestingObject> objects,
+                                                     const std::optional<HeldObject>& held) {
+  return *motionHits(robot, q_from, q_to, objects, held, false);
+}
+
+std::optional<std::vector<char>> CollisionChecker::motionCheck(int robot, const Eigen::VectorXd& q_from,
+                                                               const Eigen::VectorXd& q_to,
+                                                               std::span<const RestingObject> objects,
+                                                               const std::optional<HeldObject>& held) {
+  return motionHits(robot, q_from, q_to, objects, held, true);
+}
+
+std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const Eigen::VectorXd& q_from,
+                                                              const Eigen::VectorXd& q_to,
+                                                              std::span<const RestingObject> objects,
+                                                              const std::optional<HeldObject>& held,
+                                                              bool check_robot) {
+  const detail::SceneData& scene = *scene_->data_;
+  const RobotData& data = requireRobot(scene, robot);
+  const int n = scene_->motionSteps(robot, q_from, q_to, held);  // validates the arguments
+  requireObjects(scene, objects);
+  std::vector<char> hits(objects.size(), 0);
+  if (objects.empty() && !check_robot) return hits;
+  auto& state = *state_;
+  auto& slot = state.slots[robot];
+  std::vector<detail::Frame> poses;
+  poses.reserve(objects.size());
+  for (const RestingObject& resting : objects) poses.emplace_back(resting.X_WO);
+  const detail::ObjectData* held_data = held ? &scene.objects[held->object] : nullptr;
+  // An object is tested at a sample only when its bounding sphere reaches the box around the
+  // robot's body spheres (and held object) there: otherwise every sphere test of
+  // oneObjectCollision rejects it. The slack keeps rounding on the safe side.
+  constexpr double kSlack = 1e-6;
+  // objects apart from the box at the first sample grown by the motion's travel bound (no
+  // sphere centre moves farther) are never reached
+  std::vector<std::size_t> near;
+  near.reserve(objects.size());
+  bool first = true;
+  std::size_t left = 0;
+  state.q_a.resize(q_from.size());
+  for (const int i : state.bisectionOrder(n)) {
+    const double s = static_cast<double>(i) / n;
+    state.q_a.noalias() = q_from + s * (q_to - q_from);
+    state.forward(slot, data, state.q_a, held);
+    if (check_robot && (state.staticCollision(slot) || state.selfCollision(slot))) return std::nullopt;
+    if (first || left > 0) detail::CheckerState::updateBounds(slot, held_data);
+    if (first) {
+      first = false;
+      const double travel = n * scene.settings.motion_step + 1e-4;
+      for (std::size_t k = 0; k < objects.size(); ++k) {
+        if (held && objects[k].object == held->object) continue;  // never a hit
+        const detail::ObjectData& object = scene.objects[objects[k].object];
+        if (!detail::sphereAabbApart(poses[k].p, object.radius + travel + kSlack, slot.lo, slot.hi)) near.push_back(k);
+      }
+      left = near.size();
+      if (left == 0 && !check_robot) return hits;
+    }
+    for (const std::size_t k : near) {
+      if (left == 0) break;
+      if (hits[k]) continue;
+      const detail::ObjectData& object = scene.objects[objects[k].object];
+      if (detail::sphereAabbApart(poses[k].p, object.radius + kSlack, slot.lo, slot.hi)) continue;
+      if (!state.oneObjectCollision(slot, objects[k], poses[k])) continue;
+      hits[k] = 1;
+      if (--left == 0 && !check_robot) return hits;
+    }
+  }
+  return hits;
 }
 
 bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from, const Eigen::VectorXd& q_a_to,

@@ -165,6 +165,11 @@ class CollisionScene {
   /// (held object included) travels more than settings().motion_step between samples (>= 1).
   int motionSteps(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                   const std::optional<HeldObject>& held = std::nullopt) const;
+  /// The bound on any robot point's travel [m] (held object included, and the centres of the
+  /// checker's bounding spheres) over the straight motion q_from -> q_to: sum_j R_j |dq_j|
+  /// (motionSteps is its ceiling in motion steps).
+  double motionTravel(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                      const std::optional<HeldObject>& held = std::nullopt) const;
 
  private:
   friend class CollisionChecker;
@@ -210,6 +215,20 @@ class CollisionChecker {
                   std::span<const RestingObject> objects,
                   const std::optional<HeldObject>& held = std::nullopt);
 
+  /// Which of `objects` the straight motion q_from -> q_to touches: entry i is true when the
+  /// robot (with `held`) collides with objects[i] at some of the motion's samples (the samples
+  /// motionFree checks). The static scene and self-collision are not checked: for a motion
+  /// motionFree finds free against them, motionFree(..., {objects[i]}, ...) == !hits[i].
+  std::vector<char> motionObjectHits(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                                     std::span<const RestingObject> objects,
+                                     const std::optional<HeldObject>& held = std::nullopt);
+
+  /// motionFree against the static scene and the robot itself (no objects) and, when free,
+  /// motionObjectHits, in one pass over the samples: std::nullopt when not free.
+  std::optional<std::vector<char>> motionCheck(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                                               std::span<const RestingObject> objects,
+                                               const std::optional<HeldObject>& held = std::nullopt);
+
   /// Two robots moving at the same time along straight joint-space motions that start and end
   /// together, checked robot against robot only (each motion is assumed checked on its own)
   /// at common samples fine enough for both, in bisection order.
@@ -217,6 +236,13 @@ class CollisionChecker {
                    const std::optional<HeldObject>& held_a, int robot_b,
                    const Eigen::VectorXd& q_b_from, const Eigen::VectorXd& q_b_to,
                    const std::optional<HeldObject>& held_b);
+
+  /// robotsFree, and when free a lower bound on the distance between the two robots' bounding
+  /// spheres (bodies and held objects; pairs of bodies neither of which moves left out), so that
+  /// robotsFree stays true while the robots' points together travel less than it [m]. Returns
+  /// a negative value when they collide.
+  double robotsClearance(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,
+                         int robot_b, const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b);
 
   /// Two timed paths, robot against robot only: split at the union of both paths' times,
   /// each piece checked with motionsFree. Throws std::invalid_argument for an empty path,
@@ -228,6 +254,10 @@ class CollisionChecker {
   void resetCounters() { counters_ = {}; }
 
  private:
+  std::optional<std::vector<char>> motionHits(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                                              std::span<const RestingObject> objects,
+                                              const std::optional<HeldObject>& held, bool check_robot);
+
   const CollisionScene* scene_;
   std::unique_ptr<detail::CheckerState> state_;
   Counters counters_;

@@ -24,6 +24,17 @@ std::string secondsText(Millis t) {
   return out.str();
 }
 
+/// "place green_1 by r1 (transition 63)"
+std::string describeTransition(const MotionHypergraph& graph, int id) {
+  const TransitionSample& sample = graph.transition(id).sample;
+  const core::World& world = *graph.world().world;
+  static const char* const kinds[] = {"pick", "place", "handoff"};
+  std::string text = std::string(kinds[static_cast<int>(sample.kind)]) + " " + world.objects[sample.object].name + " by " +
+                     world.robots[sample.motions[0].robot].name;
+  if (sample.motions.size() > 1) text += " to " + world.robots[sample.motions[1].robot].name;
+  return text + " (transition " + std::to_string(id) + ")";
+}
+
 /// Why an object can never reach its goal in the task-space hypergraph, or "".
 std::string unreachableReason(const core::World& world, const TaskSpaceHypergraph& ts, const HyperpathSearch& search,
                               int object) {
@@ -156,8 +167,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           if (graph->addSchedulingConstraint(a, b)) {
             ++feedbacks;
             ++stats.scheduling_constraints;
-            say(last_failure + nodes + "; scheduling constraint on transitions " + std::to_string(a) + " and " +
-                std::to_string(b));
+            say(last_failure + nodes + "; scheduling constraint: " + describeTransition(*graph, a) + " / " +
+                describeTransition(*graph, b));
             return true;
           }
         }
@@ -197,6 +208,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         std::to_string(graph->numMoves()) + " moves");
     // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at
     // home; a new scheduling constraint starts the queries again
+    std::uint64_t unconstrained_expansions = 0;  // of the last plan found without constraints
     for (bool again = true; again && !best_schedule && !time_up();) {
       again = false;
       for (const bool park : {false, true}) {
@@ -205,18 +217,24 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
             std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
         SearchBudget query_budget = search_budget;
         if (graph->numSchedulingConstraints() > 0) {
-          query_budget.max_expansions = std::min(query_budget.max_expansions, settings.constrained_search_expansions);
+          query_budget.max_expansions = std::min(
+              query_budget.max_expansions, std::max(settings.constrained_search_expansions, 2 * unconstrained_expansions));
         }
         const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
+        if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {
+          unconstrained_expansions = greedy.expansions;
+        }
         if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan);
         if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
         if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
         if (greedy.status != SearchStatus::kFound) {
           // a pair conflict resolution could not order in one history may be ordered in
           // another: constraints that leave no task plan (within the budget) are dropped
+          // (and none comes back this round: the same plan would bring the same pair)
           if (graph->numSchedulingConstraints() > 0) {
             say("scheduling constraints dropped");
             graph->clearSchedulingConstraints();
+            feedbacks = settings.scheduling_constraints_per_round;
             again = true;
             break;
           }

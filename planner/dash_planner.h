@@ -40,8 +40,9 @@ struct PlannerSettings {
   std::uint64_t seed = 1;
   int max_rounds = 30;                        ///< representation expansions before giving up
   std::uint64_t search_expansions = 20000;    ///< per hyperpath query
-  /// per greedy query while scheduling constraints are in force: a depth-first search they
-  /// steer into a corner backtracks long, and the next round may do without them
+  /// per greedy query while scheduling constraints are in force (or twice what the last query
+  /// without them took, when more): a depth-first search they steer into a corner backtracks
+  /// long, and the next round may do without them
   std::uint64_t constrained_search_expansions = 1000;
   int conflict_nodes = 500;                   ///< per conflict resolution
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search

@@ -230,19 +230,16 @@ Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<co
   m.duration = polylineDuration(path, timing_);
   m.occupied = occupied;
   // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile.
-  // Each piece is checked against all of them at once, and site by site only when that fails.
+  // Each piece's sites come from the roadmap's cached check of that motion.
   m.touches = SiteSet(sites_.numSites());
   SiteSet unoccupied(sites_.numSites());
   for (int s = 0; s < sites_.numSites(); ++s) {
     if (!occupied.test(s) && sites_.site(s) && s / 2 != object) unoccupied.set(s);
   }
   for (std::size_t i = 1; i < path.size(); ++i) {
-    if (map.motionFree(path[i - 1], path[i], unoccupied)) continue;
+    const SiteSet piece = map.touchedSites(path[i - 1], path[i], unoccupied);
     for (int s = 0; s < sites_.numSites(); ++s) {
-      if (!unoccupied.test(s) || m.touches.test(s)) continue;
-      SiteSet only(sites_.numSites());
-      only.set(s);
-      if (!map.motionFree(path[i - 1], path[i], only)) m.touches.set(s);
+      if (piece.test(s)) m.touches.set(s);
     }
   }
   m.path = std::move(path);
@@ -282,12 +279,27 @@ std::optional<std::pair<const Move*, const Move*>> MotionHypergraph::parking(
 }
 
 bool MotionHypergraph::addSchedulingConstraint(int transition_a, int transition_b) {
-  if (transition_a == transition_b) return false;
-  return scheduling_constraints_.emplace(std::minmax(transition_a, transition_b)).second;
+  if (transition_a == transition_b || !scheduling_constraints_.emplace(std::minmax(transition_a, transition_b)).second) {
+    return false;
+  }
+  const auto hyperarcs = std::minmax(transition(transition_a).sample.hyperarc, transition(transition_b).sample.hyperarc);
+  if (hyperarcs.first != hyperarcs.second && ++hyperarc_pair_constraints_[hyperarcs] >= 2) {
+    hyperarc_constraints_.insert(hyperarcs);
+  }
+  return true;
 }
 
 bool MotionHypergraph::schedulingConflict(int transition_a, int transition_b) const {
-  return scheduling_constraints_.contains(std::minmax(transition_a, transition_b));
+  if (scheduling_constraints_.contains(std::minmax(transition_a, transition_b))) return true;
+  return !hyperarc_constraints_.empty() &&
+         hyperarc_constraints_.contains(
+             std::minmax(transition(transition_a).sample.hyperarc, transition(transition_b).sample.hyperarc));
+}
+
+void MotionHypergraph::clearSchedulingConstraints() {
+  scheduling_constraints_.clear();
+  hyperarc_pair_constraints_.clear();
+  hyperarc_constraints_.clear();
 }
 
 int MotionHypergraph::expand() {

@@ -141,12 +141,15 @@ class MotionHypergraph {
 
   /// Scheduling constraints (paper: Transition-extended Hypergraph > Scheduling Constraints):
   /// pairs of transition hyperarcs whose robots conflict resolution could not order around each
-  /// other. A transition history may include at most one transition of each pair. add...
-  /// returns false when the pair was known already (or is one transition).
+  /// other. A transition history may include at most one transition of each pair. When a
+  /// second pair joins samples of the same two task-space hyperarcs, the constraint holds for
+  /// every pair of their samples (hyperarc-hyperarc: it is where the robots act, not the sample,
+  /// that cannot be ordered). add... returns false when the pair was known already (or is one
+  /// transition).
   bool addSchedulingConstraint(int transition_a, int transition_b);
   bool schedulingConflict(int transition_a, int transition_b) const;
   std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size(); }
-  void clearSchedulingConstraints() { scheduling_constraints_.clear(); }  ///< all of them
+  void clearSchedulingConstraints();  ///< all of them
 
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
   /// growth. Returns the number of the round just completed (the first is 1).
@@ -202,6 +205,8 @@ class MotionHypergraph {
   std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
   std::deque<Move> detours_;  // made by detour()
   std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)
+  std::map<std::pair<int, int>, int> hyperarc_pair_constraints_;  // (task-space hyperarcs) -> pairs
+  std::set<std::pair<int, int>> hyperarc_constraints_;            // those with two or more
   std::vector<int> source_, target_;
 };
 

@@ -9,6 +9,7 @@
 #include <span>
 #include <stdexcept>
 #include <string>
+#include <unordered_map>
 #include <utility>
 
 namespace dashbed::planner {
@@ -82,6 +83,17 @@ core::ArmConfig lerp(const core::ArmConfig& a, const core::ArmConfig& b, double 
   return q;
 }
 
+/// Hash of a directed motion's ends (equal configurations hash alike: -0.0 as 0.0).
+struct MotionHash {
+  std::size_t operator()(const std::pair<core::ArmConfig, core::ArmConfig>& m) const {
+    std::size_t h = 0x9e3779b97f4a7c15ULL;
+    for (const core::ArmConfig* q : {&m.first, &m.second}) {
+      for (const double x : *q) h = (h ^ std::hash<double>{}(x + 0.0)) * 0x100000001b3ULL;
+    }
+    return h;
+  }
+};
+
 }  // namespace
 
 struct Roadmap::Impl {
@@ -106,6 +118,8 @@ struct Roadmap::Impl {
   std::vector<Edge> edges;
   std::vector<std::vector<int>> incident;  // node -> ids of its edges, in the order added
   std::map<std::pair<int, int>, MotionCheck> direct_checks;  // node pairs (a < b) without an edge
+  // every motion checked so far, by its (directed) ends
+  std::unordered_map<std::pair<core::ArmConfig, core::ArmConfig>, MotionCheck, MotionHash> motion_checks;
   int validated_edges = 0;
 
   Impl(const CollisionScene& scene_in, const ObjectSites& sites_in, int robot_in, std::optional<HeldObject> held_in,
@@ -178,18 +192,36 @@ struct Roadmap::Impl {
     return checker.motionFree(robot, full(a), full(b), occupiedObjects(occupied), held);
   }
 
-  /// Static-scene check of a -> b, then the sites it touches: all other objects' sites in one
-  /// check, and only when that fails each site on its own.
-  MotionCheck checkMotion(const core::ArmConfig& a, const core::ArmConfig& b) {
-    MotionCheck result{false, SiteSet(sites->numSites())};
-    const Eigen::VectorXd qa = full(a), qb = full(b);
-    if (!checker.motionFree(robot, qa, qb, {}, held)) return result;
+  /// Static-scene check of a -> b, then the sites it touches (each other object's site on its
+  /// own, in one pass over the motion's samples). Cached per direction: a motion checked
+  /// from b to a is sampled at (slightly) other points.
+  const MotionCheck& checkMotion(const core::ArmConfig& a, const core::ArmConfig& b) {
+    const auto [it, added] = motion_checks.try_emplace(std::pair{a, b});
+    if (!added) return it->second;
+    MotionCheck& result = it->second;
+    result.touches = SiteSet(sites->numSites());
+    const std::optional<std::vector<char>> hits = checker.motionCheck(robot, full(a), full(b), other_objects, held);
+    if (!hits) return result;
     result.free = true;
-    if (checker.motionFree(robot, qa, qb, other_objects, held)) return result;
     for (std::size_t k = 0; k < other_sites.size(); ++k) {
-      if (!checker.motionFree(robot, qa, qb, std::span(&other_objects[k], 1), held)) {
-        result.touches.set(other_sites[k]);
-      }
+      if ((*hits)[k]) result.touches.set(other_sites[k]);
+    }
+    return result;
+  }
+
+  /// Free against the static scene and touching none of the `occupied` sites: motionFree's
+  /// answer, from the cached check.
+  bool motionUsable(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& occupied) {
+    return usable(checkMotion(a, b), occupied);
+  }
+
+  /// The sites of `among` that the motion a -> b touches; every one of them when the motion is
+  /// not free against the static scene (as checking each on its own with motionFree says).
+  SiteSet touchedSites(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& among) {
+    const MotionCheck& check = checkMotion(a, b);
+    SiteSet result(sites->numSites());
+    for (const int site : other_sites) {
+      if (among.test(site) && (!check.free || check.touches.test(site))) result.set(site);
     }
     return result;
   }
@@ -291,7 +323,7 @@ struct Roadmap::Impl {
   void shortcut(std::vector<core::ArmConfig>& path, int from, int to, const SiteSet& occupied,
                 const Roadmap::MotionFilter& clear) {
     const auto free = [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-      return motionFree(a, b, occupied) && (!clear || clear(a, b));
+      return motionUsable(a, b, occupied) && (!clear || clear(a, b));
     };
     std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                       static_cast<std::uint32_t>(from), static_cast<std::uint32_t>(to)};
@@ -401,8 +433,7 @@ int Roadmap::growNear(const core::ArmConfig& center, int samples, double spread)
     for (int draw = 0; draw < 100; ++draw) {
       core::ArmConfig q;
       for (int j = 0; j < 6; ++j) {
-        // within the sampled range, widened to reach the centre (a configuration IK gave
-        // outside +-pi)
+        // within the sampled range, widened to reach the centre (e.g. a node added outside it)
         const double lo = std::min(m.sample_lower[j], center[j]), hi = std::max(m.sample_upper[j], center[j]);
         q[j] = std::clamp(center[j] + spread * (2.0 * uniform01(m.rng) - 1.0), lo, hi);
       }
@@ -436,6 +467,10 @@ std::optional<std::vector<core::ArmConfig>> Roadmap::query(int from, int to, con
 
 bool Roadmap::motionFree(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& occupied) {
   return impl_->motionFree(a, b, occupied);
+}
+
+SiteSet Roadmap::touchedSites(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& among) {
+  return impl_->touchedSites(a, b, among);
 }
 
 int Roadmap::robot() const { return impl_->robot; }

@@ -91,6 +91,11 @@ class Roadmap {
   /// the `occupied` sites.
   bool motionFree(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& occupied);
 
+  /// The sites of `among` (of objects other than the held one) that the straight motion a -> b
+  /// touches, i.e. those for which motionFree with only that site occupied is false. Every
+  /// motion's check (static scene, each site) is cached by its directed ends.
+  SiteSet touchedSites(const core::ArmConfig& a, const core::ArmConfig& b, const SiteSet& among);
+
   int robot() const;
   const std::optional<HeldObject>& held() const;
   int numNodes() const;

@@ -1,7 +1,9 @@
 #include "planner/scheduled_cbs.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
+#include <iterator>
 #include <limits>
 #include <queue>
 #include <sstream>
@@ -18,6 +20,7 @@ constexpr Millis kObstacleStep = 100;    // [ms] how often the other robot is sa
 constexpr std::size_t kMaxObstacles = 30;  // more distinct states than this for a detour: the
                                            // other robot is moving through, ordering is the remedy
 constexpr std::size_t kMaxParkingObstacles = 120;  // a parking is checked per configuration only
+constexpr double kClearanceSlack = 1e-4;  // [m] a robot check skipped by clearance keeps this in hand
 
 /// A precedence S[to] >= S[from] + lag.
 struct Edge {
@@ -367,36 +370,67 @@ std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
 
 }  // namespace
 
-std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
+namespace {
+
+/// What a conflict search node knows about its schedule per robot pair (see firstConflictPairs).
+struct PairKnowledge {
+  std::vector<double> checked;  ///< [s] every interval ending by then is free in the schedule checked
+  std::vector<double> same;     ///< [s] the two robots do the same as there before then
+};
+
+/// firstConflict, with what a search node knows per robot pair (index a * robots + b, a < b):
+/// `known` (may be null) lists intervals already known free, an interval [t0, t1] of pair ab
+/// being skipped when t1 <= known->checked[ab] and t1 < known->same[ab] (below `same` the two
+/// robots do what they did in the schedule that was checked, whose grid it shares). `checked`
+/// (may be null) receives per pair the time up to which every interval was found free (the
+/// start of the first interval not checked or colliding; infinity when all were free).
+std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, const Schedule& schedule, double from,
+                                                const PairKnowledge* known, std::vector<double>* checked) {
   const ScheduleView view(graph, schedule);
   const CollisionScene& scene = graph.scene();
   CollisionChecker checker(scene);
   const std::size_t robots = graph.world().world->robots.size();
   std::optional<RobotConflict> first;
+  if (checked != nullptr) checked->assign(robots * robots, std::numeric_limits<double>::infinity());
   for (std::size_t ra = 0; ra < robots; ++ra) {
     for (std::size_t rb = ra + 1; rb < robots; ++rb) {
       const int a = static_cast<int>(ra), b = static_cast<int>(rb);
       const auto& spec_a = graph.world().world->robots[ra];
       const auto& spec_b = graph.world().world->robots[rb];
       if ((spec_a.X_WBase.translation() - spec_b.X_WBase.translation()).norm() > kFarApart) continue;
+      const std::size_t pair = ra * robots + rb;
+      // the start of the first interval not found free
+      const auto stop = [&](double t) {
+        if (checked != nullptr) (*checked)[pair] = std::min((*checked)[pair], t);
+      };
       // check times: every point time of both robots and a regular grid
-      std::vector<Millis> grid;
+      // (three sorted lists merged: a robot's segments run one after another)
+      std::array<std::vector<Millis>, 3> lists;
       for (const int r : {a, b}) {
+        std::vector<Millis>& times = lists[r == a ? 0 : 1];
         const Timeline& line = view.timeline(r);
         for (std::size_t k = 0; k < line.segments.size(); ++k) {
-          for (const Millis t : line.times[k]) grid.push_back(schedule.start[line.segments[k]] + t);
+          for (const Millis t : line.times[k]) times.push_back(schedule.start[line.segments[k]] + t);
         }
+        if (!std::is_sorted(times.begin(), times.end())) std::sort(times.begin(), times.end());
       }
-      for (Millis t = 0; t <= schedule.makespan; t += kGridStep) grid.push_back(t);
-      grid.push_back(schedule.makespan);
-      std::sort(grid.begin(), grid.end());
+      for (Millis t = 0; t <= schedule.makespan; t += kGridStep) lists[2].push_back(t);
+      lists[2].push_back(schedule.makespan);
+      std::vector<Millis> ab, grid;
+      ab.reserve(lists[0].size() + lists[1].size());
+      std::merge(lists[0].begin(), lists[0].end(), lists[1].begin(), lists[1].end(), std::back_inserter(ab));
+      grid.reserve(ab.size() + lists[2].size());
+      std::merge(ab.begin(), ab.end(), lists[2].begin(), lists[2].end(), std::back_inserter(grid));
       grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
       // both robots standing as they stood in the last interval checked: nothing new to check
       std::optional<std::pair<RobotState, RobotState>> standing;
       for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
         const double t0 = toSeconds(grid[i]), t1 = toSeconds(grid[i + 1]);
-        if (first && t0 > first->t) break;
-        if (t1 <= from) continue;
+        if (first && t0 > first->t) {
+          stop(t0);
+          break;
+        }
+        if (t1 <= from || (known != nullptr && t1 <= known->checked[pair] && t1 < known->same[pair])) continue;
         const RobotState a0 = view.at(a, t0, true), b0 = view.at(b, t0, true);
         // a handoff's two robots were checked against each other when it was sampled
         const auto in_step = [&](int r, const RobotState& s) {
@@ -419,16 +453,30 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
           continue;
         }
         const int steps = static_cast<int>(std::ceil(kStepHeadroom * std::max(steps_a, steps_b)));
-        for (int k = 0; k <= steps; ++k) {
+        // the interval's own fingers and held objects, also at its end
+        const auto state_at = [&](int r, int k, const RobotState& s0, const RobotState& s1) {
+          const RobotState s = k == 0 ? s0 : k == steps ? s1 : view.at(r, t0 + (t1 - t0) * k / steps, true);
+          return view.full({s.q, s0.finger, s0.held, 0});
+        };
+        // Samples are checked in order; after a free one, the samples up to which the robots'
+        // points together travel less than their clearance there are free as well (each robot
+        // moves along one straight piece within the interval), and are skipped.
+        for (int k = 0; k <= steps;) {
           const double t = t0 + (t1 - t0) * k / steps;
-          const RobotState sa = k == 0 ? a0 : k == steps ? a1 : view.at(a, t, true);
-          const RobotState sb = k == 0 ? b0 : k == steps ? b1 : view.at(b, t, true);
-          // the interval's own fingers and held objects, also at its end
-          if (!checker.robotsFree(a, view.full({sa.q, a0.finger, a0.held, 0}), a0.held, b,
-                                  view.full({sb.q, b0.finger, b0.held, 0}), b0.held)) {
+          const Eigen::VectorXd qa = state_at(a, k, a0, a1), qb = state_at(b, k, b0, b1);
+          const double clearance = checker.robotsClearance(a, qa, a0.held, b, qb, b0.held);
+          if (clearance < 0.0) {
             if (!first || t < first->t) first = RobotConflict{t, a, b, a0.item, b0.item};
+            stop(t0);
             break;
           }
+          int next = k + 1;
+          for (; next <= steps; ++next) {
+            const double travel = scene.motionTravel(a, qa, state_at(a, next, a0, a1), a0.held) +
+                                  scene.motionTravel(b, qb, state_at(b, next, b0, b1), b0.held);
+            if (travel + kClearanceSlack >= clearance) break;
+          }
+          k = next;
         }
         if (first && first->robot_a == a && first->robot_b == b) break;
         standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
@@ -438,17 +486,24 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
   return first;
 }
 
+}  // namespace
+
+std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
+  return firstConflictPairs(graph, schedule, from, nullptr, nullptr);
+}
+
 RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {
   const ScheduleView view(graph, schedule);
   const RobotState state = view.at(robot, t, true);
   return {view.full(state), state.held};
 }
 
-/// The earliest time [s] at which some robot does something else in `b` than in `a`: up to
+/// Per robot, the earliest time [s] at which it does something else in `b` than in `a`: up to
 /// then a child's schedule repeats its parent's, which was checked free before its conflict.
-double firstDifference(const Schedule& a, const Schedule& b, int robots) {
-  double t = std::numeric_limits<double>::infinity();
+std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int robots) {
+  std::vector<double> result(static_cast<std::size_t>(robots), std::numeric_limits<double>::infinity());
   for (int r = 0; r < robots; ++r) {
+    double& t = result[static_cast<std::size_t>(r)];
     std::vector<std::size_t> in_a, in_b;
     for (std::size_t s = 0; s < a.segments.size(); ++s) {
       if (a.segments[s].robot == r) in_a.push_back(s);
@@ -470,7 +525,7 @@ double firstDifference(const Schedule& a, const Schedule& b, int robots) {
       }
     }
   }
-  return t;
+  return result;
 }
 
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
@@ -487,6 +542,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     Schedule schedule;
     std::uint64_t order = 0;
     double clear_until = 0.0;  ///< [s] no conflict before this time
+    std::optional<PairKnowledge> known;  ///< per robot pair, intervals known free
     std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
   };
   const auto worse = [](const Node& x, const Node& y) {
@@ -506,7 +562,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.segments = std::move(segments);
     schedule.start = std::move(*start);
     schedule.makespan = makespanOf(schedule);
-    return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++};
+    return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++, 0.0, std::nullopt};
   };
   // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
   const auto detoured = [&](const Node& node, int segment, std::vector<Obstacle> avoid) -> std::optional<Node> {
@@ -579,7 +635,9 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     Node node = open.top();
     open.pop();
     ++result.nodes;
-    const std::optional<RobotConflict> conflict = firstConflict(graph, node.schedule, node.clear_until);
+    std::vector<double> checked;
+    const std::optional<RobotConflict> conflict =
+        firstConflictPairs(graph, node.schedule, node.clear_until, node.known ? &*node.known : nullptr, &checked);
     if (!conflict) {
       result.status = ConflictStatus::kResolved;
       result.constraints = static_cast<int>(node.constraints());
@@ -591,7 +649,14 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     const int ra = conflict->robot_a, rb = conflict->robot_b;
     // a child repeats this schedule, free before the conflict, until their first difference
     const auto push = [&](Node child) {
-      child.clear_until = std::min(conflict->t, firstDifference(node.schedule, child.schedule, robots));
+      const std::vector<double> differ = firstDifferences(node.schedule, child.schedule, robots);
+      child.clear_until = std::min(conflict->t, *std::min_element(differ.begin(), differ.end()));
+      // per robot pair: what this node found free, as long as both robots do the same
+      PairKnowledge known{checked, std::vector<double>(checked.size(), 0.0)};
+      for (int a = 0; a < robots; ++a) {
+        for (int b = a + 1; b < robots; ++b) known.same[a * robots + b] = std::min(differ[a], differ[b]);
+      }
+      child.known = std::move(known);
       open.push(std::move(child));
     };
     // time: A before B, B before A

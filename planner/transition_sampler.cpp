@@ -345,8 +345,8 @@ bool clearOf(Context& c, const MotionBuilder& moving, std::size_t first, std::si
   return true;
 }
 
-/// The sites of other objects (ObjectSites) that some piece of the motions would touch. A piece
-/// is first checked against all of them at once; only a hit is resolved site by site.
+/// The sites of other objects (ObjectSites) that some piece of the motions would touch. The
+/// motions must have passed staticFree(..., Check::kPieces).
 SiteSet touchedSites(Context& c, const std::vector<const MotionBuilder*>& motions, int object) {
   SiteSet touches(c.sites.numSites());
   std::vector<RestingObject> others;
@@ -362,11 +362,11 @@ SiteSet touchedSites(Context& c, const std::vector<const MotionBuilder*>& motion
     for (std::size_t i = 0; i + 1 < motion.keys.size(); ++i) {
       const Eigen::VectorXd a = fullConfiguration(motion.keys[i].q, motion.finger[i], m->arm->positions);
       const Eigen::VectorXd b = fullConfiguration(motion.keys[i + 1].q, motion.finger[i], m->arm->positions);
-      if (c.checker.motionFree(motion.robot, a, b, others, motion.held[i])) continue;
+      // the piece is free against the static scene and the robot itself (staticFree): each
+      // site's check reduces to its object
+      const std::vector<char> hits = c.checker.motionObjectHits(motion.robot, a, b, others, motion.held[i]);
       for (std::size_t s = 0; s < others.size(); ++s) {
-        if (!c.checker.motionFree(motion.robot, a, b, std::span(&others[s], 1), motion.held[i])) {
-          touches.set(other_sites[s]);
-        }
+        if (hits[s]) touches.set(other_sites[s]);
       }
     }
   }

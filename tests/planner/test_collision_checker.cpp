@@ -5,6 +5,7 @@
 #include <numbers>
 #include <optional>
 #include <random>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -453,6 +454,73 @@ TEST_CASE("robotsFree agrees with a brute-force FCL check on random configuratio
   CHECK(mismatches == 0);
   CHECK(free > kSamples / 10);
   CHECK(free < kSamples * 9 / 10);
+}
+
+TEST_CASE("robotsClearance: the robots stay free while they travel less than it", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const CollisionScene& scene = sortingScene();
+  CollisionChecker dut(scene);
+  CollisionChecker check(scene);
+  RandomQueries random(7);
+  int positive = 0;
+  int mismatches = 0;
+  int violations = 0;
+  for (int i = 0; i < 3000; ++i) {
+    const VectorXd q0 = random.towardsCentre((*loaded.robots)[0]);
+    const VectorXd q1 = random.towardsCentre((*loaded.robots)[1]);
+    const auto held0 = random.held(world, 0.4);
+    const auto held1 = random.held(world, 0.4);
+    const double clearance = dut.robotsClearance(0, q0, held0, 1, q1, held1);
+    if ((clearance >= 0.0) != check.robotsFree(0, q0, held0, 1, q1, held1)) ++mismatches;
+    if (clearance <= 1e-3) continue;
+    ++positive;
+    // move both arms straight in random directions, together just under the clearance
+    for (int trial = 0; trial < 5; ++trial) {
+      VectorXd d0 = VectorXd::Zero(q0.size()), d1 = VectorXd::Zero(q1.size());
+      for (int j = 0; j < 6; ++j) {
+        d0[j] = random.uniform(-1, 1);
+        d1[j] = random.uniform(-1, 1);
+      }
+      const double travel = scene.motionTravel(0, q0, q0 + d0, held0) + scene.motionTravel(1, q1, q1 + d1, held1);
+      const double scale = (clearance - 1e-4) / travel;
+      if (!check.robotsFree(0, q0 + scale * d0, held0, 1, q1 + scale * d1, held1)) ++violations;
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(violations == 0);
+  CHECK(positive > 100);
+}
+
+TEST_CASE("motionObjectHits names the objects motionFree finds in the way", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const CollisionScene& scene = sortingScene();
+  CollisionChecker dut(scene);
+  CollisionChecker check(scene);
+  RandomQueries random(11);
+  const std::vector<RestingObject> objects = planner::startPlacement(world);
+  int compared = 0;
+  int hit = 0;
+  int mismatches = 0;
+  for (int i = 0; i < 400 && compared < 60; ++i) {
+    const VectorXd a = random.towardsCentre((*loaded.robots)[0]);
+    VectorXd b = a;
+    for (int j = 0; j < 6; ++j) b[j] += random.uniform(-0.3, 0.3);
+    const auto held = random.held(world, 0.3);
+    if (!check.motionFree(0, a, b, {}, held)) continue;
+    ++compared;
+    const std::vector<char> hits = dut.motionObjectHits(0, a, b, objects, held);
+    REQUIRE(hits.size() == objects.size());
+    for (std::size_t k = 0; k < objects.size(); ++k) {
+      const bool free = check.motionFree(0, a, b, std::span(&objects[k], 1), held);
+      if (free == static_cast<bool>(hits[k])) ++mismatches;
+      hit += hits[k] ? 1 : 0;
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(compared >= 20);
+  CHECK(hit > 0);
 }
 
 TEST_CASE("Known configurations of the sorting world", "[planner][collision]") {

@@ -137,3 +137,35 @@ TEST_CASE("a scheduling constraint keeps its pair of transitions out of later ta
   graph.clearSchedulingConstraints();
   CHECK_FALSE(graph.schedulingConflict(a, b));
 }
+
+TEST_CASE("a second scheduling constraint on the same two hyperarcs constrains all their samples", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  // two pick hyperarcs of different robots with at least two samples each
+  std::vector<std::vector<int>> picks;  // samples of each chosen hyperarc
+  std::set<int> robots;
+  for (std::size_t h = 0; h < task_space.numHyperarcs() && picks.size() < 2; ++h) {
+    const TransitionHyperarc& arc = task_space.hyperarcs()[h];
+    if (arc.kind != TransitionKind::kPick || robots.count(arc.robot) == 1) continue;
+    const std::vector<int>& samples = graph.transitionsOf(static_cast<int>(h), -1);
+    if (samples.size() < 2) continue;
+    picks.push_back(samples);
+    robots.insert(arc.robot);
+  }
+  REQUIRE(picks.size() == 2);
+  const std::vector<int>& a = picks[0];
+  const std::vector<int>& b = picks[1];
+  REQUIRE(graph.addSchedulingConstraint(a[0], b[0]));
+  CHECK(graph.schedulingConflict(a[0], b[0]));
+  CHECK_FALSE(graph.schedulingConflict(a[1], b[1]));  // one pair: those samples only
+  REQUIRE(graph.addSchedulingConstraint(a[1], b[0]));
+  CHECK(graph.schedulingConflict(a[1], b[1]));  // two pairs: every sample of the two hyperarcs
+  CHECK(graph.schedulingConflict(b[1], a[0]));
+  CHECK_FALSE(graph.schedulingConflict(a[0], a[1]));  // not within a hyperarc
+  CHECK(graph.numSchedulingConstraints() == 2);
+  graph.clearSchedulingConstraints();
+  CHECK_FALSE(graph.schedulingConflict(a[1], b[1]));
+  REQUIRE(graph.addSchedulingConstraint(a[1], b[1]));  // counting starts again
+  CHECK_FALSE(graph.schedulingConflict(a[0], b[0]));
+}
