@@ -46,6 +46,13 @@ HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
   for (int o = 0; o < graph.sites().numObjects(); ++o) {
     final_occupancy_.set(graph.sites().goal[o] ? ObjectSites::goalSite(o) : ObjectSites::startSite(o));
   }
+  const TaskSpaceHypergraph& ts = graph.taskSpace();
+  place_hyperarc_.assign(static_cast<std::size_t>(ts.numRobots() * ts.numObjects()), -1);
+  for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = ts.hyperarcs()[h];
+    int& place = place_hyperarc_[static_cast<std::size_t>(arc.robot * ts.numObjects() + arc.object)];
+    if (arc.kind == TransitionKind::kPlace && place < 0) place = static_cast<int>(h);
+  }
   updateCostToGo();
 }
 HyperpathSearch::~HyperpathSearch() = default;
@@ -163,14 +170,9 @@ bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) {
 }
 
 bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
-  const TaskSpaceHypergraph& ts = graph_->taskSpace();
-  for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
-    const TransitionHyperarc& arc = ts.hyperarcs()[h];
-    if (arc.kind == TransitionKind::kPlace && arc.robot == robot && arc.object == object) {
-      return graph_->transitionsOf(static_cast<int>(h), grasp).empty();
-    }
-  }
-  return false;  // no place hyperarc: the cost to go says where the object should go
+  const int place = place_hyperarc_[static_cast<std::size_t>(robot * graph_->taskSpace().numObjects() + object)];
+  // no place hyperarc: the cost to go says where the object should go
+  return place >= 0 && graph_->transitionsOf(place, grasp).empty();
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {

@@ -108,6 +108,7 @@ class HyperpathSearch {
   MotionHypergraph* graph_;
   bool park_at_home_;
   SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
+  std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
   std::unique_ptr<AStarState> astar_;
 };
