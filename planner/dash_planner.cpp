@@ -25,14 +25,50 @@ std::string secondsText(Millis t) {
 }
 
 /// "place green_1 by r1 (transition 63)"
-std::string describeTransition(const MotionHypergraph& graph, int id) {
-  const TransitionSample& sample = graph.transition(id).sample;
-  const core::World& world = *graph.world().world;
+/// "pick cube_0 by r1", "handoff cube_0 by r0 to r1": a task-space hyperarc in words.
+std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph& task_space, int hyperarc) {
+  const TransitionHyperarc& arc = task_space.hyperarcs().at(static_cast<std::size_t>(hyperarc));
   static const char* const kinds[] = {"pick", "place", "handoff"};
-  std::string text = std::string(kinds[static_cast<int>(sample.kind)]) + " " + world.objects[sample.object].name + " by " +
-                     world.robots[sample.motions[0].robot].name;
-  if (sample.motions.size() > 1) text += " to " + world.robots[sample.motions[1].robot].name;
-  return text + " (transition " + std::to_string(id) + ")";
+  std::string text = std::string(kinds[static_cast<int>(arc.kind)]) + " " + world.objects[arc.object].name + " by " +
+                     world.robots[arc.robot].name;
+  if (arc.kind == TransitionKind::kHandoff) text += " to " + world.robots[arc.receiver].name;
+  return text;
+}
+
+std::string describeTransition(const MotionHypergraph& graph, int id) {
+  return describeHyperarc(*graph.world().world, graph.taskSpace(), graph.transition(id).sample.hyperarc) +
+         " (transition " + std::to_string(id) + ")";
+}
+
+/// Why the robots cannot even stand at home, or "": a robot at its home configuration (gripper
+/// open) inside the static scene or another robot at home. A world file that puts a base inside
+/// a table or two bases on top of each other gets this instead of a misleading failure later.
+std::string homeCollisionReason(const MotionHypergraph& graph) {
+  const auto& robots = graph.world().world->robots;
+  CollisionChecker checker(graph.scene());
+  const auto at_home = [&](std::size_t r) {
+    Eigen::VectorXd q = Eigen::VectorXd::Constant(graph.scene().numPositions(static_cast<int>(r)), kFingersOpen);
+    for (int j = 0; j < 6; ++j) q[j] = robots[r].home[static_cast<std::size_t>(j)];
+    return q;
+  };
+  const auto where = [&](std::size_t r) {
+    const core::SourceLocation& at = robots[r].where;
+    return at.file.empty() ? std::string() : " (" + at.file + ":" + std::to_string(at.line) + ")";
+  };
+  for (std::size_t r = 0; r < robots.size(); ++r) {
+    if (!checker.robotFree(static_cast<int>(r), at_home(r), {})) {
+      return "robot " + robots[r].name + where(r) +
+             " collides with the static scene at its home configuration: check robots[" + std::to_string(r) +
+             "].base and home";
+    }
+    for (std::size_t s = 0; s < r; ++s) {
+      if (!checker.robotsFree(static_cast<int>(r), at_home(r), std::nullopt, static_cast<int>(s), at_home(s), std::nullopt)) {
+        return "robots " + robots[s].name + where(s) + " and " + robots[r].name + where(r) +
+               " collide with each other at their home configurations: check their bases";
+      }
+    }
+  }
+  return "";
 }
 
 /// Why an object can never reach its goal in the task-space hypergraph, or "".
@@ -117,6 +153,11 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     stats.roadmap_nodes = graph->numRoadmapNodes();
   };
 
+  if (std::string reason = homeCollisionReason(*graph); !reason.empty()) {
+    result.reason = std::move(reason);
+    record();
+    return result;
+  }
   // objects that can never reach their goals: infeasible, whatever the sampling
   {
     const HyperpathSearch probe(*graph);
@@ -169,6 +210,15 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
             ++stats.scheduling_constraints;
             say(last_failure + nodes + "; scheduling constraint: " + describeTransition(*graph, a) + " / " +
                 describeTransition(*graph, b));
+            return true;
+          }
+        }
+        for (const auto& [transition, robot] : resolved.home_blocked) {
+          if (graph->addHomeConstraint(transition, robot)) {
+            ++feedbacks;
+            ++stats.scheduling_constraints;
+            say(last_failure + nodes + "; scheduling constraint: " + describeTransition(*graph, transition) + " / " +
+                graph->world().world->robots[static_cast<std::size_t>(robot)].name + " at home");
             return true;
           }
         }
@@ -259,6 +309,12 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     result.status = PlannerStatus::kTimeout;
     result.reason = (time_up() ? "time budget exhausted after " : "no plan after ") + std::to_string(graph->rounds()) +
                     " rounds of representation expansion: " + last_failure;
+    // transitions the search asked for and the sampler never found say where the gap is
+    const std::vector<int> unsampled = graph->unsampledHyperarcs();
+    for (std::size_t k = 0; k < unsampled.size() && k < 4; ++k) {
+      result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, task_space, unsampled[k]);
+    }
+    if (unsampled.size() > 4) result.reason += " and " + std::to_string(unsampled.size() - 4) + " more";
     return result;
   }
   stats.makespan = toSeconds(best);

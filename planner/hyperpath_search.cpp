@@ -176,6 +176,12 @@ bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
+  const auto& robots = graph_->world().world->robots;
+  for (std::size_t r = 0; r < history.robots.size(); ++r) {
+    // a robot that has not acted yet stands at home
+    const bool at_home = history.robots[r].free == 0 && history.robots[r].q == robots[r].home;
+    if (at_home && graph_->homeConflict(transition, static_cast<int>(r))) return true;
+  }
   return std::any_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
     return graph_->schedulingConflict(step.transition, transition);
   });

@@ -34,8 +34,6 @@ class ScopedTimer {
   std::chrono::steady_clock::time_point start_;
 };
 
-constexpr double kFingersOpen = 0.025;  // [m] each finger, a robot alone (Hand-E stroke, core/grasps.h)
-
 }  // namespace
 
 void RepresentationSettings::validate() const {
@@ -59,7 +57,7 @@ MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpa
   const ScopedTimer timer(construction_seconds_);
   settings_.validate();
   scene_ = std::make_unique<CollisionScene>(*world.world, *world.robots, settings_.collision);
-  sites_ = objectSites(*world.world);
+  sites_ = objectSites(world);
   sampler_ = std::make_unique<TransitionSampler>(world, task_space, *scene_, sites_, settings_.transitions);
   // every robot of a world is a UR5e: the first one's limits stand for all
   const core::RobotModel& model = *world.robots->robots().front().model;
@@ -296,10 +294,26 @@ bool MotionHypergraph::schedulingConflict(int transition_a, int transition_b) co
              std::minmax(transition(transition_a).sample.hyperarc, transition(transition_b).sample.hyperarc));
 }
 
+bool MotionHypergraph::addHomeConstraint(int transition_id, int robot) {
+  if (!home_constraints_.emplace(transition_id, robot).second) return false;
+  const std::pair<int, int> key{transition(transition_id).sample.hyperarc, robot};
+  if (++hyperarc_home_counts_[key] >= 2) hyperarc_home_constraints_.insert(key);
+  return true;
+}
+
+bool MotionHypergraph::homeConflict(int transition_id, int robot) const {
+  if (home_constraints_.empty()) return false;
+  return home_constraints_.contains({transition_id, robot}) ||
+         hyperarc_home_constraints_.contains({transition(transition_id).sample.hyperarc, robot});
+}
+
 void MotionHypergraph::clearSchedulingConstraints() {
   scheduling_constraints_.clear();
   hyperarc_pair_constraints_.clear();
   hyperarc_constraints_.clear();
+  home_constraints_.clear();
+  hyperarc_home_counts_.clear();
+  hyperarc_home_constraints_.clear();
 }
 
 int MotionHypergraph::expand() {
@@ -333,6 +347,16 @@ std::vector<int> MotionHypergraph::verticesOf(int task_vertex) const {
     if (vertices_[v].task_vertex == task_vertex) ids.push_back(static_cast<int>(v));
   }
   return ids;
+}
+
+std::vector<int> MotionHypergraph::unsampledHyperarcs() const {
+  std::map<int, bool> sampled;  // asked for -> has a sample
+  for (const auto& [key, ids] : transitions_of_) sampled[key.first] = sampled[key.first] || !ids.empty();
+  std::vector<int> result;
+  for (const auto& [hyperarc, any] : sampled) {
+    if (!any) result.push_back(hyperarc);
+  }
+  return result;
 }
 
 std::optional<Millis> MotionHypergraph::bestDuration(int hyperarc) const {

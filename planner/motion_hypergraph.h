@@ -46,6 +46,9 @@
 
 namespace dashbed::planner {
 
+/// Finger position of a robot alone: its gripper open [m] (each finger; Hand-E stroke, core/grasps.h).
+inline constexpr double kFingersOpen = 0.025;
+
 struct RepresentationSettings {
   int initial_roadmap_samples = 10;    ///< samples of a roadmap when it is created (paper: 10)
   int roadmap_samples_per_round = 10;  ///< added to every roadmap per round (paper: 10)
@@ -148,7 +151,13 @@ class MotionHypergraph {
   /// transition).
   bool addSchedulingConstraint(int transition_a, int transition_b);
   bool schedulingConflict(int transition_a, int transition_b) const;
-  std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size(); }
+  /// Vertex-hyperarc scheduling constraints on a robot's start (home) vertex: the transition's
+  /// motion runs into `robot` standing at home, so a transition history may only include it
+  /// once that robot has left home (taken a transition of its own). Promoted to the task-space
+  /// hyperarc on a second sample, as above. Returns false when known already.
+  bool addHomeConstraint(int transition, int robot);
+  bool homeConflict(int transition, int robot) const;
+  std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size() + home_constraints_.size(); }
   void clearSchedulingConstraints();  ///< all of them
 
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
@@ -172,6 +181,10 @@ class MotionHypergraph {
   /// The lowest duration of any transition sampled so far for a task-space hyperarc, or
   /// std::nullopt when none is.
   std::optional<Millis> bestDuration(int hyperarc) const;
+
+  /// The task-space hyperarcs the search has asked for samples of (for some grasp) and that have
+  /// none yet, in id order: e.g. handoffs of an object too small for two grippers.
+  std::vector<int> unsampledHyperarcs() const;
 
  private:
   int addVertex(const MotionVertex& vertex);
@@ -207,6 +220,9 @@ class MotionHypergraph {
   std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)
   std::map<std::pair<int, int>, int> hyperarc_pair_constraints_;  // (task-space hyperarcs) -> pairs
   std::set<std::pair<int, int>> hyperarc_constraints_;            // those with two or more
+  std::set<std::pair<int, int>> home_constraints_;                // (transition, robot)
+  std::map<std::pair<int, int>, int> hyperarc_home_counts_;       // (task-space hyperarc, robot) -> samples
+  std::set<std::pair<int, int>> hyperarc_home_constraints_;       // those with two or more
   std::vector<int> source_, target_;
 };
 

@@ -53,7 +53,8 @@ Eigen::Matrix3d restingOrientation(const Eigen::Matrix3d& R_WO, double yaw) {
 
 }  // namespace
 
-ObjectSites objectSites(const core::World& world) {
+ObjectSites objectSites(const core::LoadedWorld& loaded) {
+  const core::World& world = *loaded.world;
   ObjectSites sites;
   std::map<std::string, std::size_t> used;
   for (const core::ObjectSpec& object : world.objects) {
@@ -70,16 +71,27 @@ ObjectSites objectSites(const core::World& world) {
     // the object's extent along the region's axes
     const Eigen::Vector3d footprint =
         (region->X_WR.linear().transpose() * R_WO * object.size.asDiagonal()).cwiseAbs().rowwise().sum();
-    const std::vector<Eigen::Vector3d> slots = regionSlots(*region, footprint);
-    std::size_t& k = used[region->name];
-    if (k >= slots.size()) {
-      throw std::runtime_error("region " + region->name + " has room for " + std::to_string(slots.size()) +
-                               " objects side by side; more are sent there");
+    std::vector<core::Pose> slots;
+    for (const Eigen::Vector3d& p : regionSlots(*region, footprint)) {
+      core::Pose X_WO = core::Pose::Identity();
+      X_WO.linear() = R_WO;
+      X_WO.translation() = p;
+      slots.push_back(X_WO);
     }
-    core::Pose X_WO = core::Pose::Identity();
-    X_WO.linear() = R_WO;
-    X_WO.translation() = slots[k++];
-    sites.goal.push_back(X_WO);
+    const auto reached = [&](const core::Pose& X_WO) {
+      const auto& robots = loaded.robots->robots();
+      return std::any_of(robots.begin(), robots.end(),
+                         [&](const core::PlacedRobot& r) { return core::reachesBox(r, X_WO, object.size); });
+    };
+    const std::size_t in_reach = static_cast<std::size_t>(
+        std::stable_partition(slots.begin(), slots.end(), reached) - slots.begin());
+    std::size_t& k = used[region->name];
+    if (k >= in_reach) {
+      throw std::runtime_error("region " + region->name + " has room for " + std::to_string(in_reach) +
+                               " objects side by side within reach of a robot (" + std::to_string(slots.size()) +
+                               " in all); more are sent there");
+    }
+    sites.goal.push_back(slots[k++]);
   }
   return sites;
 }

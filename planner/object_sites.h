@@ -7,14 +7,16 @@
 //
 // Goal placements: the objects sent to a region are given slots in it, in object order, side
 // by side in rows (pitch = object size + room for the fingertips on both sides), centred on
-// the region floor. The object rests on the face it rests on at its start, turned about the
-// vertical into line with the region.
+// the region floor; slots some robot reaches (core::reachesBox) come first, so a region only
+// partly within reach fills its reachable part. The object rests on the face it rests on at
+// its start, turned about the vertical into line with the region.
 
 #include <optional>
 #include <vector>
 
 #include "core/pose.h"
 #include "core/world.h"
+#include "core/world_loader.h"
 #include "planner/collision_checker.h"
 
 namespace dashbed::planner {
@@ -46,7 +48,7 @@ struct ObjectSites {
 std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size);
 
 /// The sites of every object of a world. Throws std::runtime_error naming the region when more
-/// objects are sent to it than fit side by side.
-ObjectSites objectSites(const core::World& world);
+/// objects are sent to it than fit side by side within reach of a robot.
+ObjectSites objectSites(const core::LoadedWorld& world);
 
 }  // namespace dashbed::planner

@@ -12,7 +12,6 @@
 namespace dashbed::planner {
 namespace {
 
-constexpr double kFingersOpen = 0.025;   // [m] a robot alone keeps its gripper open
 constexpr Millis kGridStep = 20;         // [ms] extra check times between key times
 constexpr double kStepHeadroom = 1.5;    // speed variation within a grid interval
 constexpr double kFarApart = 2.6;        // [m] bases farther apart than twice the reach + tool: never touch
@@ -695,6 +694,14 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         result.unordered.push_back(pair);
       }
     }
+    // standing at home before its first segment (item -1): the other's transition meets home
+    for (const auto& [transition, item, robot] : {std::tuple{ta, conflict->item_b, rb}, std::tuple{tb, conflict->item_a, ra}}) {
+      const std::pair<int, int> blocked{transition, robot};
+      if (transition >= 0 && item == -1 &&
+          std::find(result.home_blocked.begin(), result.home_blocked.end(), blocked) == result.home_blocked.end()) {
+        result.home_blocked.push_back(blocked);
+      }
+    }
     int& reroutes = result.reroutes;
     const std::vector<ScheduleSegment>& segments = node.schedule.segments;
     for (const auto& [robot, item, other, other_item] :
@@ -711,6 +718,11 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       } else if (const int k = -1 - item; k < static_cast<int>(line.segments.size()) && other_item >= 0) {
         const int segment = line.segments[k];
         if (segments[segment].move == nullptr) continue;
+        // standing no time at all: the conflict is where the segment before ends, no parking helps
+        if (k > 0) {
+          const int before = line.segments[k - 1];
+          if (node.schedule.start[before] + segments[before].duration >= node.schedule.start[segment]) continue;
+        }
         const int busy = view.timeline(other).segments[other_item];
         ++reroutes;
         if (std::optional<Node> child = parked(node, segment, obstaclesDuring(view, node.schedule, busy, other))) {

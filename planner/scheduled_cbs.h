@@ -70,7 +70,7 @@ struct Schedule {
 
 struct ConflictResolutionBudget {
   int max_nodes = 2000;       ///< high-level nodes expanded
-  int max_reroutes = 8;      ///< detours and parkings tried (each a roadmap search)
+  int max_reroutes = 24;     ///< detours and parkings tried (each a roadmap search)
   std::function<bool()> stop;  ///< true when time is up (may be empty)
 };
 
@@ -89,6 +89,10 @@ struct ConflictResult {
   /// to its step's transition (a move to the transition it leads into; standing still, to the
   /// segment before); items of no transition (before the first, the move home) give none.
   std::vector<std::pair<int, int>> unordered;
+  /// Conflicts that no order could resolve between a transition (its item, as above) and a
+  /// robot standing at home before its first segment (or idle all along): the vertex-hyperarc
+  /// scheduling constraints (transition, robot) to feed back.
+  std::vector<std::pair<int, int>> home_blocked;
 };
 
 /// Resolves the robot-robot conflicts of a complete history (with its moves home).

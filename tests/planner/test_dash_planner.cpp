@@ -85,6 +85,16 @@ TEST_CASE("a cube no robot can reach makes the problem infeasible and is named",
   CHECK_FALSE(result.plan);
 }
 
+TEST_CASE("a robot base inside the table makes the problem infeasible and names the robot", "[planner][dash]") {
+  core::World world = core::loadWorldFile(worldPath("default.yaml"));
+  world.robots[1].X_WBase.translation().z() -= 0.25;  // its base and shoulder in the table top
+  const core::LoadedWorld loaded = unchecked(std::move(world));
+  const PlanResult result = solve(loaded, testSettings());
+  CHECK(result.status == PlannerStatus::kInfeasible);
+  CHECK_THAT(result.reason, Contains("robot " + loaded.world->robots[1].name) && Contains("static scene"));
+  CHECK_FALSE(result.plan);
+}
+
 TEST_CASE("the motion hypergraph's DOT shows its vertex map and transitions", "[planner][dash]") {
   const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
@@ -168,4 +178,51 @@ TEST_CASE("a second scheduling constraint on the same two hyperarcs constrains a
   CHECK_FALSE(graph.schedulingConflict(a[1], b[1]));
   REQUIRE(graph.addSchedulingConstraint(a[1], b[1]));  // counting starts again
   CHECK_FALSE(graph.schedulingConflict(a[0], b[0]));
+}
+
+TEST_CASE("a pick that runs into a robot standing at home is planned around with a handoff", "[planner][dash]") {
+  // only r1 reaches the bin, but r1 picking the cube runs into r0's gripper at home
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/idle_home_block.yaml");
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  CHECK(result.stats.scheduling_constraints >= 1);
+  const core::Plan& plan = *result.plan;
+  requireValidActions(plan, *world.world);
+  requireNoRobotCollision(plan, world);
+  REQUIRE(plan.actions.size() == 3);
+  CHECK(plan.actions[0].type == core::ActionType::kPick);
+  CHECK(plan.actions[0].robot == "r0");
+  CHECK(plan.actions[1].type == core::ActionType::kHandoff);
+}
+
+TEST_CASE("a home constraint keeps its transition out while the robot stands at home", "[planner][dash]") {
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/idle_home_block.yaml");
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  const SearchResult first = HyperpathSearch(graph).greedy({});
+  REQUIRE(first.status == SearchStatus::kFound);
+  const int pick = first.plan->steps.front().transition;
+  const int picker = graph.transition(pick).sample.motions[0].robot;
+  const int other = 1 - picker;
+  REQUIRE(graph.addHomeConstraint(pick, other));
+  CHECK_FALSE(graph.addHomeConstraint(pick, other));
+  CHECK(graph.homeConflict(pick, other));
+  CHECK_FALSE(graph.homeConflict(pick, picker));
+  CHECK(graph.numSchedulingConstraints() == 1);
+
+  // the next plan does not start with that pick while the other robot is still at home
+  const SearchResult second = HyperpathSearch(graph).greedy({});
+  REQUIRE(second.status == SearchStatus::kFound);
+  bool other_acted = false;
+  for (const ScheduledTransition& step : second.plan->steps) {
+    const TransitionSample& sample = graph.transition(step.transition).sample;
+    if (step.transition == pick) CHECK(other_acted);
+    for (const TransitionMotion& motion : sample.motions) other_acted = other_acted || motion.robot == other;
+  }
+  graph.clearSchedulingConstraints();
+  CHECK_FALSE(graph.homeConflict(pick, other));
+  CHECK(graph.numSchedulingConstraints() == 0);
 }

@@ -41,7 +41,7 @@ const CollisionScene& sortingScene() {
 }
 
 const ObjectSites& sortingSites() {
-  static const ObjectSites sites = planner::objectSites(*sortingWorld().world);
+  static const ObjectSites sites = planner::objectSites(sortingWorld());
   return sites;
 }
 

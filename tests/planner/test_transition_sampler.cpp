@@ -39,7 +39,7 @@ struct Setup {
       : loaded(core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + world)),
         task_space(TaskSpaceHypergraph::fromWorld(*loaded.world, *loaded.robots, loaded.reach)),
         scene(*loaded.world, *loaded.robots),
-        sites(planner::objectSites(*loaded.world)) {}
+        sites(planner::objectSites(loaded)) {}
 
   std::vector<int> hyperarcs(TransitionKind kind) const {
     std::vector<int> ids;

@@ -1,0 +1,70 @@
+// Goal sites of objects sent to a region (planner/object_sites.h): one slot each, inside the
+// region, apart from each other; slots a robot reaches are used first, and a region without
+// enough of them is an error that says so.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <stdexcept>
+#include <string>
+
+#include "core/reach.h"
+#include "core/world_io.h"
+#include "core/world_loader.h"
+#include "planner/object_sites.h"
+
+using namespace dashbed;
+using Catch::Matchers::Contains;
+
+namespace {
+
+std::string testWorld(const std::string& name) {
+  return std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/" + name;
+}
+
+bool reachedByARobot(const core::LoadedWorld& world, const core::Pose& X_WO, const Eigen::Vector3d& size) {
+  const auto& robots = world.robots->robots();
+  return std::any_of(robots.begin(), robots.end(), [&](const core::PlacedRobot& r) { return core::reachesBox(r, X_WO, size); });
+}
+
+}  // namespace
+
+TEST_CASE("objects sent to a bin only partly in reach get slots a robot reaches", "[planner][sites]") {
+  const core::LoadedWorld world = core::loadWorld(testWorld("bin_partly_in_reach.yaml"));
+  const core::ObjectSpec& first = world.world->objects.front();
+  const core::Region& bin = *world.world->goalRegionOf(first);
+  // the premise: some slot of the bin is out of reach
+  const std::vector<Eigen::Vector3d> slots = planner::regionSlots(bin, first.size);
+  const std::size_t unreached = static_cast<std::size_t>(std::count_if(slots.begin(), slots.end(), [&](const Eigen::Vector3d& p) {
+    core::Pose X_WO = core::Pose::Identity();
+    X_WO.translation() = p;
+    return !reachedByARobot(world, X_WO, first.size);
+  }));
+  REQUIRE(unreached > 0);
+  REQUIRE(slots.size() - unreached >= world.world->objects.size());
+
+  const planner::ObjectSites sites = planner::objectSites(world);
+  for (std::size_t o = 0; o < world.world->objects.size(); ++o) {
+    INFO(world.world->objects[o].name);
+    REQUIRE(sites.goal[o]);
+    CHECK(reachedByARobot(world, *sites.goal[o], world.world->objects[o].size));
+    for (std::size_t p = 0; p < o; ++p) {
+      CHECK((sites.goal[o]->translation() - sites.goal[p]->translation()).norm() >= first.size.maxCoeff());
+    }
+  }
+}
+
+TEST_CASE("more objects than a region has reachable slots for is an error naming the region", "[planner][sites]") {
+  core::World world = core::loadWorldFile(testWorld("bin_partly_in_reach.yaml"));
+  const core::ObjectSpec cube = world.objects.front();
+  const core::Region& bin = *world.goalRegionOf(cube);
+  // as many cubes as the bin has slots: some of them out of reach
+  const std::size_t slots = planner::regionSlots(bin, cube.size).size();
+  while (world.objects.size() < slots) {
+    core::ObjectSpec more = cube;
+    more.name = "cube_" + std::to_string(world.objects.size());
+    more.X_WO.translation().y() += 0.06 * static_cast<double>(world.objects.size());
+    world.objects.push_back(more);
+  }
+  const core::LoadedWorld loaded = core::validateWorld(std::move(world));
+  CHECK_THROWS_WITH(planner::objectSites(loaded), Contains("bin_blue") && Contains("within reach of a robot"));
+}
