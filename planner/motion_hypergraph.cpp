@@ -326,13 +326,18 @@ int MotionHypergraph::expand() {
   for (const auto& [hyperarc, grasp] : handoff_keys) sampleHandoffs(hyperarc, grasp, round_);
   for (auto& [key, map] : roadmaps_) map.grow(settings_.roadmap_samples_per_round);
   grown_this_round_.clear();
-  // cached failures may now succeed; found moves stay valid
-  std::erase_if(moves_, [](const auto& entry) { return !entry.second.has_value(); });
+  // every move is planned again on the grown roadmaps (found ones kept alive for pointers
+  // still held): a new round brings new paths, not only the ones that failed
+  for (auto& [key, found] : moves_) {
+    if (found) retired_moves_.push_back(std::move(*found));
+  }
+  moves_.clear();
   return round_;
 }
 
 std::size_t MotionHypergraph::numMoves() const {
-  return static_cast<std::size_t>(std::count_if(moves_.begin(), moves_.end(), [](const auto& e) { return e.second.has_value(); }));
+  return retired_moves_.size() +
+         static_cast<std::size_t>(std::count_if(moves_.begin(), moves_.end(), [](const auto& e) { return e.second.has_value(); }));
 }
 
 std::size_t MotionHypergraph::numRoadmapNodes() const {

@@ -22,9 +22,11 @@
 // each roadmap when it is first used (RepresentationSettings::initial_roadmap_samples); place
 // and handoff hyperarcs are sampled for each grasp the search finds an object held in, the
 // first time it needs them (their tail vertex exists only once that grasp is reachable);
-// every later round (expand()) adds handoff samples for every grasp seen so far and grows
-// every roadmap by roadmap_samples_per_round. Sampling is seeded per hyperarc, grasp and
-// round, so the hypergraph does not depend on the order in which the search asks.
+// every later round (expand()) adds handoff samples for every grasp seen so far, grows every
+// roadmap by roadmap_samples_per_round and plans moves afresh on the grown roadmaps (a new
+// round gives conflict resolution new paths, not only the moves that failed before). Sampling
+// is seeded per hyperarc, grasp and round, so the hypergraph does not depend on the order in
+// which the search asks.
 
 #include <cstdint>
 #include <deque>
@@ -168,7 +170,7 @@ class MotionHypergraph {
   const MotionVertex& vertex(int id) const { return vertices_.at(id); }
   std::size_t numVertices() const { return vertices_.size(); }
   std::size_t numTransitions() const { return transitions_.size(); }
-  std::size_t numMoves() const;
+  std::size_t numMoves() const;  ///< moves found, all rounds
   std::size_t numRoadmaps() const { return roadmaps_.size(); }
   std::size_t numRoadmapNodes() const;
   /// The vertex map: motion vertices of a task-space vertex, in id order.
@@ -217,6 +219,7 @@ class MotionHypergraph {
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
   std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
   std::deque<Move> detours_;  // made by detour()
+  std::deque<Move> retired_moves_;  // moves of earlier rounds (pointers to them stay valid)
   std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)
   std::map<std::pair<int, int>, int> hyperarc_pair_constraints_;  // (task-space hyperarcs) -> pairs
   std::set<std::pair<int, int>> hyperarc_constraints_;            // those with two or more

@@ -119,9 +119,11 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
 }
 
 void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options) {
-  std::cout << "\nplanning (DaSH, " << options.choice.method << ", seed " << options.choice.seed << ")...\n";
+  // --quiet: the planner's result only when it is the verdict (no plan)
+  const bool quiet = options.outputs.quiet;
+  if (!quiet) std::cout << "\nplanning (DaSH, " << options.choice.method << ", seed " << options.choice.seed << ")...\n";
   planner::PlanResult planned = planWorld(loaded, options.choice);
-  std::cout << describePlanResult(planned);
+  if (!quiet || !planned.plan) std::cout << describePlanResult(planned);
   if (!planned.plan) throw CLI::RuntimeError(exitCodeOf(planned.status));
   const core::Plan& plan = *planned.plan;
   if (!options.plan_out.empty()) {
@@ -129,7 +131,7 @@ void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options)
     out << core::writePlanJson(plan);
     if (!out) throw std::runtime_error("cannot write " + options.plan_out);
   }
-  std::cout << "\nsimulating and checking...\n";
+  if (!quiet) std::cout << "\nsimulating and checking...\n";
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, "plan");
   const sim::Report report = simulateAndRecord(*loaded.world, *loaded.robots, plan,
                                               options.plan_out.empty() ? "plan" : options.plan_out, options.video,
@@ -142,7 +144,7 @@ void runJob(const RunOptions& options) {
   const std::filesystem::path file =
       options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(file);
-  printSummary(loaded, file, options);
+  if (!options.outputs.quiet || options.json || options.validate_only) printSummary(loaded, file, options);
   if (!options.validate_only && !options.json) planAndSimulate(loaded, options);
 }
 
