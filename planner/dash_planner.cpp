@@ -309,8 +309,10 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     result.status = PlannerStatus::kTimeout;
     result.reason = (time_up() ? "time budget exhausted after " : "no plan after ") + std::to_string(graph->rounds()) +
                     " rounds of representation expansion: " + last_failure;
-    // transitions the search asked for and the sampler never found say where the gap is
-    const std::vector<int> unsampled = graph->unsampledHyperarcs();
+    // without any task plan, the transitions the search asked for and the sampler never found
+    // say where the gap is (e.g. no handoff of an object too small for two grippers)
+    const std::vector<int> unsampled =
+        best_history || stats.task_plans > 0 ? std::vector<int>{} : graph->unsampledHyperarcs();
     for (std::size_t k = 0; k < unsampled.size() && k < 4; ++k) {
       result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, task_space, unsampled[k]);
     }

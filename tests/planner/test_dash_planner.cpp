@@ -95,6 +95,18 @@ TEST_CASE("a robot base inside the table makes the problem infeasible and names 
   CHECK_FALSE(result.plan);
 }
 
+TEST_CASE("a timeout without any task plan names the transitions that were never sampled", "[planner][dash]") {
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/handoff_too_wide.yaml");
+  PlannerSettings settings = testSettings();
+  settings.max_rounds = 3;
+  const PlanResult result = solve(world, settings);
+  CHECK(result.status == PlannerStatus::kTimeout);
+  CHECK_THAT(result.reason, Contains("no task plan in the representation") &&
+                                Contains("never sampled: handoff cube_0 by r1 to r0"));
+  CHECK_FALSE(result.plan);
+}
+
 TEST_CASE("the motion hypergraph's DOT shows its vertex map and transitions", "[planner][dash]") {
   const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
