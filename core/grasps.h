@@ -12,6 +12,8 @@ namespace dashbed::core {
 
 /// Widest box face pair the Hand-E can close on: 2 x 25 mm stroke (reference file, S4-S7).
 inline constexpr double kHandeMaxOpening = 0.050;
+/// The opening a grasp keeps to spare around the box, and the fingertips above the surface [m].
+inline constexpr double kGraspClearance = 0.005;
 /// How far the fingertips reach beyond the TCP along the approach axis: tip end 145.5 mm vs
 /// TCP 132.5 mm from the Hand-E mounting face (reference file, S4/S6).
 inline constexpr double kFingertipBeyondTcp = 0.013;
@@ -35,6 +37,6 @@ struct BoxGrasp {
 ///    enough to hold the TCP high enough for the gripper body to clear the surface while the
 ///    pads still overlap the box by at least 10 mm.
 /// Face pairs wider than the gripper opening minus `clearance` are left out.
-std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance = 0.005);
+std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance = kGraspClearance);
 
 }  // namespace dashbed::core

@@ -42,6 +42,14 @@ ReachMap computeReach(const World& world, const RobotSet& robots) {
 void requireReachable(const World& world, const ReachMap& reach) {
   for (std::size_t o = 0; o < world.objects.size(); ++o) {
     const ObjectSpec& object = world.objects[o];
+    if (boxGrasps(object.size).empty()) {
+      std::ostringstream msg;
+      msg << formatLocation(object.where) << ": objects[" << o << "].size: object '" << object.name << "' ("
+          << object.size.x() * 1000 << " x " << object.size.y() * 1000
+          << " mm across) is too wide for the gripper: it opens to " << kHandeMaxOpening * 1000
+          << " mm and keeps " << kGraspClearance * 1000 << " mm of it to spare across a pair of opposite sides";
+      throw WorldError(msg.str());
+    }
     if (reach.start[o].empty()) {
       const Eigen::Vector3d p = object.X_WO.translation();
       std::ostringstream msg;

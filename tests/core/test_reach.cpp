@@ -73,3 +73,21 @@ TEST_CASE("grasps of a resting cube come from above only", "[reach]") {
   // wider than the opening: no grasp across that face pair
   CHECK(boxGrasps(Eigen::Vector3d(0.06, 0.03, 0.04)).size() == 2);
 }
+
+TEST_CASE("an object too wide for the gripper says so, not that it is out of reach", "[reach]") {
+  World world = parseWorldYaml(defaultWorldText(), "worlds/default.yaml");
+  const auto cube = std::find_if(world.objects.begin(), world.objects.end(),
+                                 [](const ObjectSpec& o) { return o.name == "cube_0"; });
+  REQUIRE(cube != world.objects.end());
+  const int line = cube->where.line;
+  SECTION("46 mm: narrower than the opening, but without the clearance") {
+    cube->size = Eigen::Vector3d::Constant(0.046);
+    REQUIRE_THROWS_WITH(validateWorld(world), Catch::Matchers::Contains("worlds/default.yaml:" + std::to_string(line)) &&
+                                                  Catch::Matchers::Contains("size: object 'cube_0'") &&
+                                                  Catch::Matchers::Contains("too wide for the gripper"));
+  }
+  SECTION("44 mm fits") {
+    cube->size = Eigen::Vector3d::Constant(0.044);
+    CHECK_NOTHROW(validateWorld(world));
+  }
+}
