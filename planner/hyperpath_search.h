@@ -90,7 +90,8 @@ class HyperpathSearch {
   std::vector<Candidate> candidates(const TransitionHistory& history);
   std::optional<TransitionHistory> apply(const TransitionHistory& history, const Candidate& candidate);
   std::optional<TransitionHistory> finish(const TransitionHistory& history);
-  /// The history holds a transition that a scheduling constraint pairs with `transition`.
+  /// A scheduling constraint keeps `transition` out of the history: the history holds a
+  /// transition paired with it, or a robot it must wait for still stands at home.
   bool excluded(const TransitionHistory& history, int transition) const;
   bool deadlocked(const TransitionHistory& history) const;
   /// The handoff hyperarc `arc` may take the object from its giver: towards the goal (by the
