@@ -164,15 +164,30 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
   });
 }
 
-bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) {
+bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) const {
   const core::ArmConfig& home = graph_->world().world->robots[static_cast<std::size_t>(robot)].home;
   return q == home || graph_->move(robot, -1, -1, q, home, final_occupancy_) != nullptr;
+}
+
+bool HyperpathSearch::usable(int transition) const {
+  const TransitionSample& sample = graph_->transition(transition).sample;
+  if (sample.kind != TransitionKind::kPlace) return true;
+  if (usable_round_ != graph_->rounds()) {  // a new round: new roadmaps, new moves
+    usable_.clear();
+    usable_round_ = graph_->rounds();
+  }
+  if (usable_.size() <= static_cast<std::size_t>(transition)) usable_.resize(static_cast<std::size_t>(transition) + 1, -1);
+  signed char& known = usable_[static_cast<std::size_t>(transition)];
+  if (known < 0) known = homeReachable(sample.motions[0].robot, sample.motions[0].end()) ? 1 : 0;
+  return known == 1;
 }
 
 bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
   const int place = place_hyperarc_[static_cast<std::size_t>(robot * graph_->taskSpace().numObjects() + object)];
   // no place hyperarc: the cost to go says where the object should go
-  return place >= 0 && graph_->transitionsOf(place, grasp).empty();
+  if (place < 0) return false;
+  const std::vector<int>& ids = graph_->transitionsOf(place, grasp);
+  return std::none_of(ids.begin(), ids.end(), [&](int id) { return usable(id); });
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
@@ -190,9 +205,7 @@ bool HyperpathSearch::excluded(const TransitionHistory& history, int transition)
 std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory& history, const Candidate& candidate) {
   const MotionTransition& transition = graph_->transition(candidate.transition);
   const TransitionSample& sample = transition.sample;
-  if (sample.kind == TransitionKind::kPlace && !homeReachable(sample.motions[0].robot, sample.motions[0].end())) {
-    return std::nullopt;
-  }
+  if (!usable(candidate.transition)) return std::nullopt;
   const ObjectSites& sites = graph_->sites();
   const SiteSet occupied = history.occupied(sites.numSites());
   const int o = sample.object;
@@ -301,7 +314,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   const auto available = [&](std::size_t h, int grasp) {
     const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
     return std::any_of(ids.begin(), ids.end(),
-                       [&](int id) { return !graph_->transition(id).sample.touches.intersects(placed); });
+                       [&](int id) { return !graph_->transition(id).sample.touches.intersects(placed) && usable(id); });
   };
   std::vector<bool> progresses(n, false);
   for (bool changed = true; changed;) {

@@ -98,10 +98,15 @@ class HyperpathSearch {
   /// cost to go), or away from it out of a hand that cannot place it (placeBlocked) to a robot
   /// that has not held it before.
   bool handoffAllowed(const TransitionHistory& history, const TransitionHyperarc& arc) const;
-  /// `robot` can go home from `q` once every object is where the plan leaves it.
-  bool homeReachable(int robot, const core::ArmConfig& q);
-  /// `robot` has a place hyperarc for `object` but no sample of it for `grasp` (sampled on
-  /// demand).
+  /// `robot` can go home from `q` once every object is where the plan leaves it (the moves of
+  /// the current round's roadmaps).
+  bool homeReachable(int robot, const core::ArmConfig& q) const;
+  /// A transition the plan can use: a place only when its robot can go home from where the
+  /// place leaves it (a robot placing into a shelf slot right in front of it may end in a pose
+  /// the roadmap cannot bring back); picks and handoffs always.
+  bool usable(int transition) const;
+  /// `robot` has a place hyperarc for `object` but no usable sample of it for `grasp` (sampled
+  /// on demand).
   bool placeBlocked(int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();
@@ -111,6 +116,8 @@ class HyperpathSearch {
   SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
   std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
+  mutable std::vector<signed char> usable_;  ///< [transition] usable() this round: 1, 0, -1 unknown
+  mutable int usable_round_ = 0;
   std::unique_ptr<AStarState> astar_;
 };
 

@@ -238,3 +238,28 @@ TEST_CASE("a home constraint keeps its transition out while the robot stands at 
   CHECK_FALSE(graph.homeConflict(pick, other));
   CHECK(graph.numSchedulingConstraints() == 0);
 }
+
+TEST_CASE("a place its robot cannot get home from counts as no place: the object is handed over", "[planner][dash]") {
+  // r0 reaches the slots right in front of it only in poses its roadmap cannot bring home
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/shelf_front_slots.yaml");
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  SearchResult result = HyperpathSearch(graph).greedy({});
+  while (result.status != SearchStatus::kFound && graph.rounds() < 8) {
+    graph.expand();
+    result = HyperpathSearch(graph).greedy({});
+  }
+  INFO("rounds: " << graph.rounds());
+  REQUIRE(result.status == SearchStatus::kFound);
+  int places = 0, handoffs = 0;
+  for (const ScheduledTransition& step : result.plan->steps) {
+    const TransitionSample& sample = graph.transition(step.transition).sample;
+    if (sample.kind == TransitionKind::kHandoff) ++handoffs;
+    if (sample.kind != TransitionKind::kPlace) continue;
+    ++places;
+    CHECK(world.world->robots[static_cast<std::size_t>(sample.motions[0].robot)].name == "r1");
+  }
+  CHECK(places == 2);
+  CHECK(handoffs == 1);
+}
