@@ -1,6 +1,7 @@
 #include "planner/dash_planner.h"
 
 #include <algorithm>
+#include <bit>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -120,6 +121,13 @@ const char* toString(PlannerStatus status) {
       break;
   }
   return "timeout";
+}
+
+std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int round, std::uint64_t unconstrained) {
+  const int doublings = std::clamp(round - 1, 0, 40);
+  const std::uint64_t grown = settings.constrained_search_expansions
+                              << std::min(doublings, std::countl_zero(settings.constrained_search_expansions));
+  return std::min(settings.search_expansions, std::max(grown, 2 * unconstrained));
 }
 
 PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget) {
@@ -267,8 +275,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
             std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
         SearchBudget query_budget = search_budget;
         if (graph->numSchedulingConstraints() > 0) {
-          query_budget.max_expansions = std::min(
-              query_budget.max_expansions, std::max(settings.constrained_search_expansions, 2 * unconstrained_expansions));
+          query_budget.max_expansions = constrainedSearchExpansions(settings, round, unconstrained_expansions);
         }
         const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
         if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {

@@ -263,3 +263,19 @@ TEST_CASE("a place its robot cannot get home from counts as no place: the object
   CHECK(places == 2);
   CHECK(handoffs == 1);
 }
+
+TEST_CASE("a constrained greedy query may look twice as far every round, up to the query budget", "[planner][dash]") {
+  PlannerSettings settings;
+  settings.constrained_search_expansions = 1000;
+  settings.search_expansions = 20000;
+  CHECK(constrainedSearchExpansions(settings, 1, 0) == 1000);
+  CHECK(constrainedSearchExpansions(settings, 2, 0) == 2000);
+  CHECK(constrainedSearchExpansions(settings, 4, 0) == 8000);
+  CHECK(constrainedSearchExpansions(settings, 5, 0) == 16000);
+  CHECK(constrainedSearchExpansions(settings, 6, 0) == 20000);
+  CHECK(constrainedSearchExpansions(settings, 1000, 0) == 20000);
+  // twice what the last unconstrained query took, when more
+  CHECK(constrainedSearchExpansions(settings, 1, 3000) == 6000);
+  CHECK(constrainedSearchExpansions(settings, 3, 3000) == 6000);
+  CHECK(constrainedSearchExpansions(settings, 1, 15000) == 20000);
+}
