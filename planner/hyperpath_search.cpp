@@ -164,30 +164,36 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
   });
 }
 
-bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) const {
+bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) {
   const core::ArmConfig& home = graph_->world().world->robots[static_cast<std::size_t>(robot)].home;
   return q == home || graph_->move(robot, -1, -1, q, home, final_occupancy_) != nullptr;
 }
 
-bool HyperpathSearch::usable(int transition) const {
-  const TransitionSample& sample = graph_->transition(transition).sample;
-  if (sample.kind != TransitionKind::kPlace) return true;
+signed char& HyperpathSearch::usableEntry(int transition) const {
   if (usable_round_ != graph_->rounds()) {  // a new round: new roadmaps, new moves
     usable_.clear();
     usable_round_ = graph_->rounds();
   }
   if (usable_.size() <= static_cast<std::size_t>(transition)) usable_.resize(static_cast<std::size_t>(transition) + 1, -1);
-  signed char& known = usable_[static_cast<std::size_t>(transition)];
+  return usable_[static_cast<std::size_t>(transition)];
+}
+
+bool HyperpathSearch::usable(int transition) {
+  const TransitionSample& sample = graph_->transition(transition).sample;
+  if (sample.kind != TransitionKind::kPlace) return true;
+  signed char& known = usableEntry(transition);
   if (known < 0) known = homeReachable(sample.motions[0].robot, sample.motions[0].end()) ? 1 : 0;
   return known == 1;
 }
+
+bool HyperpathSearch::knownUnusable(int transition) const { return usableEntry(transition) == 0; }
 
 bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
   const int place = place_hyperarc_[static_cast<std::size_t>(robot * graph_->taskSpace().numObjects() + object)];
   // no place hyperarc: the cost to go says where the object should go
   if (place < 0) return false;
   const std::vector<int>& ids = graph_->transitionsOf(place, grasp);
-  return std::none_of(ids.begin(), ids.end(), [&](int id) { return usable(id); });
+  return std::all_of(ids.begin(), ids.end(), [&](int id) { return knownUnusable(id); });
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
@@ -314,7 +320,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   const auto available = [&](std::size_t h, int grasp) {
     const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
     return std::any_of(ids.begin(), ids.end(),
-                       [&](int id) { return !graph_->transition(id).sample.touches.intersects(placed) && usable(id); });
+                       [&](int id) { return !graph_->transition(id).sample.touches.intersects(placed) && !knownUnusable(id); });
   };
   std::vector<bool> progresses(n, false);
   for (bool changed = true; changed;) {

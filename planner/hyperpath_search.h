@@ -100,13 +100,20 @@ class HyperpathSearch {
   bool handoffAllowed(const TransitionHistory& history, const TransitionHyperarc& arc) const;
   /// `robot` can go home from `q` once every object is where the plan leaves it (the moves of
   /// the current round's roadmaps).
-  bool homeReachable(int robot, const core::ArmConfig& q) const;
+  bool homeReachable(int robot, const core::ArmConfig& q);
   /// A transition the plan can use: a place only when its robot can go home from where the
   /// place leaves it (a robot placing into a shelf slot right in front of it may end in a pose
-  /// the roadmap cannot bring back); picks and handoffs always.
-  bool usable(int transition) const;
-  /// `robot` has a place hyperarc for `object` but no usable sample of it for `grasp` (sampled
-  /// on demand).
+  /// the roadmap cannot bring back); picks and handoffs always. Asks the roadmap once per
+  /// round and transition, when the search first applies it.
+  bool usable(int transition);
+  /// A place that usable() found unusable this round. Asks no roadmap: the deadlock check and
+  /// placeBlocked run on every child, and their queries would spend the roadmaps' growth of the
+  /// round on places the search may never try.
+  bool knownUnusable(int transition) const;
+  /// This round's entry of `transition` in usable_ (the cache is cleared when a round begins).
+  signed char& usableEntry(int transition) const;
+  /// `robot` has a place hyperarc for `object` but no sample of it for `grasp` (sampled on
+  /// demand) that is not known to be unusable.
   bool placeBlocked(int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();
