@@ -1,7 +1,6 @@
 #include "planner/dash_planner.h"
 
 #include <algorithm>
-#include <bit>
 #include <iomanip>
 #include <limits>
 #include <sstream>
@@ -124,9 +123,8 @@ const char* toString(PlannerStatus status) {
 }
 
 std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int round, std::uint64_t unconstrained) {
-  const int doublings = std::clamp(round - 1, 0, 40);
-  const std::uint64_t grown = settings.constrained_search_expansions
-                              << std::min(doublings, std::countl_zero(settings.constrained_search_expansions));
+  std::uint64_t grown = settings.constrained_search_expansions;
+  for (int r = 1; r < round && grown < settings.search_expansions; ++r) grown *= 2;
   return std::min(settings.search_expansions, std::max(grown, 2 * unconstrained));
 }
 
