@@ -60,6 +60,7 @@ void addGenCommand(CLI::App& app) {
   struct SortOptions {
     SortingParams params;
     std::string start = "cross";
+    std::string layout = "paper";
     std::string output;
   };
   auto sort_options = std::make_shared<SortOptions>();
@@ -68,12 +69,17 @@ void addGenCommand(CLI::App& app) {
       "Sorting: cubes of colour classes (red, green, blue, yellow) on a shared table must go "
       "into one bin per class. 2 robots face each other across the table (r0 owns the red and "
       "blue bins, r1 green and yellow); 4 robots stand in a square facing the centre (robot k "
-      "owns class k). 'cross' starts every cube in front of a robot that cannot reach its bin, "
+      "owns class k). With --layout rows, 2..8 robots stand in two facing rows along a long "
+      "table with the bins at its two ends. 'cross' starts every cube in front of a robot that cannot reach its bin, "
       "so every cube must be handed over; 'random' starts cubes anywhere in the shared "
       "workspace. Cubes stay at least 0.1 m apart; too many cubes for the zones is an error "
       "that says how many fit.");
-  sort->add_option("--robots", sort_options->params.robots, "Number of robots: 2 or 4")
-      ->check(CLI::IsMember({2, 4}))
+  sort->add_option("--robots", sort_options->params.robots, "Number of robots: 2 or 4; in rows even, 2..8")
+      ->check(CLI::IsMember({2, 4, 6, 8}))
+      ->capture_default_str();
+  sort->add_option("--layout", sort_options->layout,
+                   "Robot layout: paper (2 facing, 4 in a square) or rows (two facing rows)")
+      ->check(CLI::IsMember({"paper", "rows"}))
       ->capture_default_str();
   sort->add_option("--cubes", sort_options->params.cubes, "Number of cubes (>= 1)")
       ->check(CLI::PositiveNumber)
@@ -91,6 +97,7 @@ void addGenCommand(CLI::App& app) {
   sort->add_option("-o,--output", sort_options->output, "Output file (default: stdout)");
   sort->callback([sort_options] {
     sort_options->params.start = parseStartLayout(sort_options->start);
+    sort_options->params.layout = parseRobotLayout(sort_options->layout);
     const core::World world =
         generateOrFail([&] { return generateSorting(sort_options->params); });
     emitWorld(world, sort_options->output);

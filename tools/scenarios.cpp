@@ -41,6 +41,14 @@ StartLayout parseStartLayout(const std::string& text) {
   throw std::invalid_argument("start layout must be 'cross' or 'random', got '" + text + "'");
 }
 
+std::string toString(RobotLayout layout) { return layout == RobotLayout::kPaper ? "paper" : "rows"; }
+
+RobotLayout parseRobotLayout(const std::string& text) {
+  if (text == "paper") return RobotLayout::kPaper;
+  if (text == "rows") return RobotLayout::kRows;
+  throw std::invalid_argument("robot layout must be 'paper' or 'rows', got '" + text + "'");
+}
+
 namespace {
 
 constexpr double kPi = std::numbers::pi;
@@ -57,6 +65,8 @@ constexpr double kCubeFriction = 0.8;
 constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice cell per axis
 // cells are kMinCubeSpacing + 2 * kJitter apart so that jittered centres keep kMinCubeSpacing
 constexpr double kCellPitch = kMinCubeSpacing + 2.0 * kJitter;
+constexpr double kRowPitch = 1.0;  // [m] between the columns of the rows layout
+constexpr int kMaxRowRobots = 8;
 
 constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0};
 // shelving: kHome would put the gripper into the shelf (TCP 0.49 m ahead of the base), and a
@@ -182,15 +192,20 @@ std::string describeZoneCapacity(const char* zone, std::size_t fit, std::size_t 
 }  // namespace
 
 core::World generateSorting(const SortingParams& params) {
-  if (params.robots != 2 && params.robots != 4) {
+  const bool rows = params.layout == RobotLayout::kRows;
+  if (!rows && params.robots != 2 && params.robots != 4) {
     throw std::invalid_argument("sorting: robots must be 2 or 4, got " +
                                 std::to_string(params.robots));
+  }
+  if (rows && (params.robots < 2 || params.robots > kMaxRowRobots || params.robots % 2 != 0)) {
+    throw std::invalid_argument("sorting: robots in rows must be even, 2.." + std::to_string(kMaxRowRobots) +
+                                ", got " + std::to_string(params.robots));
   }
   if (params.classes < 1 || params.classes > 4) {
     throw std::invalid_argument("sorting: classes must be in 1..4, got " +
                                 std::to_string(params.classes));
   }
-  if (params.robots == 4 && params.classes != 4) {
+  if (!rows && params.robots == 4 && params.classes != 4) {
     throw std::invalid_argument("sorting: 4 robots need exactly 4 classes (one per robot), got " +
                                 std::to_string(params.classes));
   }
@@ -206,7 +221,26 @@ core::World generateSorting(const SortingParams& params) {
   std::vector<Eigen::Vector2d> bin_positions(kClassNames.size());
   std::vector<Eigen::Vector2d> bin_outward(kClassNames.size());  // a bigger bin grows this way
 
-  if (params.robots == 2) {
+  if (rows) {
+    const int columns = params.robots / 2;
+    const double half = 0.5 * (columns - 1) * kRowPitch;  // x of the last column
+    world.fixtures.push_back(makeTable(2 * half + 1.6, 1.4));
+    for (int r = 0; r < params.robots; ++r) {
+      const double side = r % 2 == 0 ? -1.0 : 1.0;  // r(2k) in the row at y < 0
+      const Eigen::Vector2d p(-half + (r / 2) * kRowPitch + 0.0, side * 0.7);
+      const Eigen::Vector2d u(0.0, -side);
+      robots.push_back({p, u, {}});
+      exclusive_zones.push_back({p, u, 0.25, 0.45, -0.3, 0.3});
+    }
+    // red and blue beyond the first column, green and yellow beyond the last
+    robots[0].owned_classes = {0};
+    robots[1].owned_classes = {2};
+    robots[params.robots - 1].owned_classes.push_back(1);
+    robots[params.robots - 2].owned_classes.push_back(3);
+    bin_positions = {{-half - 0.5, -0.35}, {half + 0.5, 0.35}, {-half - 0.5, 0.35}, {half + 0.5, -0.35}};
+    bin_outward = {{-1.0, 0.0}, {1.0, 0.0}, {-1.0, 0.0}, {1.0, 0.0}};
+    random_zones = {{{0.0, 0.0}, {1.0, 0.0}, -half - 0.3, half + 0.3, -0.26, 0.26}};
+  } else if (params.robots == 2) {
     world.fixtures.push_back(makeTable(2.0, 1.4));
     robots = {{{-0.7, 0.0}, {1.0, 0.0}, {0, 2}},  // r0 owns red, blue
               {{0.7, 0.0}, {-1.0, 0.0}, {1, 3}}};  // r1 owns green, yellow
@@ -263,7 +297,8 @@ core::World generateSorting(const SortingParams& params) {
     const int n = params.robots;
     for (int i = 0; i < params.cubes; ++i) {
       const int owner = class_owner[cube_class[i]];
-      cube_zone[i] = (owner + n / 2) % n;
+      // rows: the other end column, the other row (the two orders mirror each other)
+      cube_zone[i] = rows ? n - 1 - owner : (owner + n / 2) % n;
     }
   } else {
     // random: one pooled zone (the union of the cells of all random zones)
@@ -312,17 +347,21 @@ core::World generateSorting(const SortingParams& params) {
   }
 
   const std::string layout = toString(params.start);
-  world.name = "sort_" + std::to_string(params.robots) + "r_" + std::to_string(params.cubes) +
-               "c_" + layout + "_s" + std::to_string(params.seed);
+  world.name = "sort_" + std::to_string(params.robots) + "r_" + std::to_string(params.cubes) + "c_" +
+               (rows ? "rows_" : "") + layout + "_s" + std::to_string(params.seed);
   world.description =
-      "Sorting (DaSH paper): " + std::to_string(params.robots) + " UR5e + Hand-E robots " +
-      (params.robots == 2 ? "facing each other across a table" : "in a square facing the centre") +
+      std::string(rows ? "Sorting: " : "Sorting (DaSH paper): ") + std::to_string(params.robots) +
+      " UR5e + Hand-E robots " +
+      (rows                 ? "in two facing rows along a table, the bins at its ends"
+       : params.robots == 2 ? "facing each other across a table"
+                            : "in a square facing the centre") +
       " sort " + std::to_string(params.cubes) + " cubes of " + std::to_string(params.classes) +
       " colour classes into their bins; " +
       (params.start == StartLayout::kCross
            ? "cross start (every cube starts away from its bin's robot and must be handed over)"
            : "random start in the shared workspace") +
-      "; generated by `dashbed gen sort --robots " + std::to_string(params.robots) +
+      "; generated by `dashbed gen sort " + (rows ? "--layout rows " : "") + "--robots " +
+      std::to_string(params.robots) +
       " --cubes " + std::to_string(params.cubes) + " --classes " +
       std::to_string(params.classes) + " --start " + layout + " --seed " +
       std::to_string(params.seed) + "`.";

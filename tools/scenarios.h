@@ -57,21 +57,39 @@ std::string toString(StartLayout layout);
 /// Parses "cross" or "random"; throws std::invalid_argument otherwise.
 StartLayout parseStartLayout(const std::string& text);
 
+/// Where sorting robots stand.
+enum class RobotLayout {
+  kPaper,  ///< the paper's: 2 robots facing each other, or 4 in a square facing the centre
+  kRows,   ///< 2..8 robots (even) in two facing rows along a long table, bins at its two ends
+};
+
+/// "paper" or "rows".
+std::string toString(RobotLayout layout);
+/// Parses "paper" or "rows"; throws std::invalid_argument otherwise.
+RobotLayout parseRobotLayout(const std::string& text);
+
 /// Parameters of the sorting scenario.
 struct SortingParams {
-  int robots = 2;   ///< 2 (facing each other across a table) or 4 (a square facing its centre)
+  int robots = 2;   ///< paper layout: 2 or 4; rows: even, 2..8
   int cubes = 4;    ///< number of 0.04 m cubes, >= 1; the start zones bound it (see generateSorting)
   int classes = 4;  ///< 1..4 colour classes (red, green, blue, yellow); exactly 4 with 4 robots
+                    ///< in the paper layout
   StartLayout start = StartLayout::kCross;
   std::uint64_t seed = 1;
+  RobotLayout layout = RobotLayout::kPaper;
 };
 
 /// The sorting scenario: cubes of colour classes on a shared table, one bin per class; cube i
 /// has class i mod classes and goal region bin_<class>.
 ///
-/// 2 robots: r0 at (-0.7, 0) facing +x owns the red and blue bins, r1 at (0.7, 0) facing -x
-/// owns green and yellow. 4 robots: r0..r3 at (-0.75,0), (0,-0.75), (0.75,0), (0,0.75) facing
-/// the centre, robot k owns class k. Cubes stand on distinct cells of a lattice in the start
+/// Paper layout, 2 robots: r0 at (-0.7, 0) facing +x owns the red and blue bins, r1 at (0.7, 0)
+/// facing -x owns green and yellow. 4 robots: r0..r3 at (-0.75,0), (0,-0.75), (0.75,0),
+/// (0,0.75) facing the centre, robot k owns class k.
+/// Rows: column k (1 m apart, centred on x = 0) holds r(2k) at y = -0.7 facing +y and r(2k+1)
+/// at y = 0.7 facing -y; the red and blue bins stand beyond the first column (owned by r0 and
+/// r1), green and yellow beyond the last (r(n-1) and r(n-2)). A cross start puts a cube in
+/// front of the robot of the other end column and the other row, so it travels the table's
+/// length from hand to hand; a random start anywhere on the strip between the rows. Cubes stand on distinct cells of a lattice in the start
 /// zones, jittered so that centres stay at least kMinCubeSpacing apart, with yaw in
 /// [-pi/4, pi/4). Throws std::invalid_argument (saying how many cubes fit) for bad parameters.
 core::World generateSorting(const SortingParams& params);

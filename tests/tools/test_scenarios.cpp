@@ -10,6 +10,7 @@
 #include <string>
 
 #include "core/world_io.h"
+#include "core/world_loader.h"
 #include "tools/scenarios.h"
 
 namespace dashbed::tools {
@@ -133,6 +134,11 @@ TEST_CASE("generated worlds load and pass the world validation", "[scenarios]") 
   for (int classes = 1; classes <= 3; ++classes) {
     roundTrip(generateSorting({2, 4, classes, StartLayout::kCross, 5}));
   }
+  for (int robots = 2; robots <= 8; robots += 2) {
+    for (StartLayout start : {StartLayout::kCross, StartLayout::kRandom}) {
+      roundTrip(generateSorting({robots, 2 * robots, 4, start, 2, RobotLayout::kRows}));
+    }
+  }
   for (int objects = 2; objects <= 12; objects += 2) {
     roundTrip(generateShelving({objects, 1}));
   }
@@ -194,6 +200,31 @@ TEST_CASE("sorting: cross starts every cube away from its bin's robot", "[scenar
         }
       }
     }
+  }
+}
+
+TEST_CASE("sorting in rows: cross starts every cube at the far end of the table", "[scenarios]") {
+  for (int robots = 2; robots <= 8; robots += 2) {
+    const core::World dut = generateSorting({robots, 2 * robots, 4, StartLayout::kCross, 3, RobotLayout::kRows});
+    INFO(dut.name);
+    CHECK(dut.name == "sort_" + std::to_string(robots) + "r_" + std::to_string(2 * robots) + "c_rows_cross_s3");
+    REQUIRE(dut.robots.size() == static_cast<std::size_t>(robots));
+    CHECK(minCentreSpacing(dut) >= kMinCubeSpacing - 1e-12);
+    const double length = (robots / 2 - 1) * 1.0;  // between the end columns [m]
+    for (const auto& cube : dut.objects) {
+      const int owner = nearestRobot(dut, xy(fixtureNamed(dut, "bin_" + cube.object_class).X_WF));
+      const int starter = nearestRobot(dut, xy(cube.X_WO));
+      INFO(cube.name << " owner r" << owner << " starts at r" << starter);
+      CHECK(starter == robots - 1 - owner);
+      const Eigen::Vector2d apart = xy(dut.robots[starter].X_WBase) - xy(dut.robots[owner].X_WBase);
+      CHECK(std::abs(apart.x()) == Approx(length));
+      CHECK(std::abs(apart.y()) == Approx(1.4));
+    }
+    // robots face across the table; every start and goal is within some robot's reach
+    for (const auto& robot : dut.robots) {
+      CHECK(robot.X_WBase.linear().col(0).y() * robot.X_WBase.translation().y() == Approx(-0.7));
+    }
+    CHECK_NOTHROW(core::validateWorld(dut));
   }
 }
 
@@ -276,6 +307,11 @@ TEST_CASE("invalid parameters throw with a clear message", "[scenarios]") {
   CHECK_THROWS_WITH(generateShelving({14, 1}), Contains("objects must be even and in 2..12"));
   CHECK_THROWS_WITH(generateShelving({0, 1}), Contains("objects must be even and in 2..12"));
   CHECK_THROWS_WITH(parseStartLayout("diagonal"), Contains("'cross' or 'random'"));
+  CHECK_THROWS_WITH(generateSorting({3, 4, 4, StartLayout::kCross, 1, RobotLayout::kRows}),
+                    Contains("robots in rows must be even, 2..8"));
+  CHECK_THROWS_WITH(generateSorting({10, 4, 4, StartLayout::kCross, 1, RobotLayout::kRows}),
+                    Contains("robots in rows must be even, 2..8"));
+  CHECK_THROWS_WITH(parseRobotLayout("ring"), Contains("'paper' or 'rows'"));
 }
 
 }  // namespace dashbed::tools
