@@ -1,6 +1,6 @@
 // The DaSH planner's longer runs (label "long"): the shelving search with its scheduling
-// constraints, shelving end to end, three robots in a hand-written layout, and MM-DaSH against greedy. Iteration
-// caps, no wall-clock budgets.
+// constraints, shelving end to end, three robots in a hand-written layout, six robots in rows,
+// and MM-DaSH against greedy. Iteration caps, no wall-clock budgets.
 #include <catch2/catch.hpp>
 
 #include <map>
@@ -95,6 +95,34 @@ TEST_CASE("three robots in a layout of their own get valid collision-free plans"
   std::set<std::string> busy;
   for (const core::PlanAction& a : result.plan->actions) busy.insert(a.robot);
   CHECK(busy.size() == 3);
+}
+
+TEST_CASE("six robots in two rows hand every cube along the table", "[planner][dash]") {
+  // cross start in rows: each cube starts at the far end of the table from its bin, two columns
+  // away, so it passes through at least two handoffs (and robots hand to neighbours on either
+  // side while others work next to them)
+  const core::LoadedWorld world =
+      core::validateWorld(tools::generateSorting({6, 4, 4, tools::StartLayout::kCross, 1, tools::RobotLayout::kRows}));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  std::map<std::string, int> handoffs;  // object -> handoffs
+  std::set<std::string> busy;
+  for (const core::PlanAction& a : result.plan->actions) {
+    busy.insert(a.robot);
+    if (a.type == core::ActionType::kHandoff) {
+      ++handoffs[a.object];
+      busy.insert(a.receiver);
+    }
+  }
+  REQUIRE(handoffs.size() == world.world->objects.size());
+  for (const auto& [object, count] : handoffs) {
+    INFO(object);
+    CHECK(count >= 2);
+  }
+  CHECK(busy.size() == 6);
 }
 
 TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
