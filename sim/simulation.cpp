@@ -37,6 +37,14 @@ constexpr double kMargin = 0.001;
 // Ratio of the finger coupling in Bullet's gear convention (velocity_a + ratio * velocity_b = 0):
 // -1 makes the two finger joints move equally (tests/sim checks it).
 constexpr double kFingerGearRatio = -1.0;
+// Positional correction of the finger coupling per step. Bullet's gear row corrects
+// position_a + ratio * position_b (here the difference of the two fingers) towards zero with a
+// positive value; without it a difference made while the coupling's impulse limit is reached
+// (an object pulled out of a closed hand at a handoff) stays for good, and an open hand then
+// comes down on the next cube with one finger millimetres inside the other's side of it.
+// Bullet leaves erp * difference below about 0.36 mm uncorrected: 0.8 keeps the fingers within
+// half a millimetre of each other (tests/sim checks it).
+constexpr double kFingerGearErp = 0.8;
 
 btVector3 toBt(const Eigen::Vector3d& v) { return {v.x(), v.y(), v.z()}; }
 Eigen::Vector3d fromBt(const btVector3& v) { return {v.x(), v.y(), v.z()}; }
@@ -385,10 +393,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
           robot.body.get(), robot.finger_links[0], robot.body.get(), robot.finger_links[1], btVector3(0, 0, 0),
           btVector3(0, 0, 0), btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
       gear->setGearRatio(kFingerGearRatio);
-      // velocity coupling only: the fingers start equal and stay equal. (Bullet's positional
-      // correction term of this constraint pulls towards mirrored positions for this ratio,
-      // which would make the fingers fight each other.)
-      gear->setErp(0.0);
+      gear->setErp(kFingerGearErp);
       gear->setMaxAppliedImpulse(2.0 * controllers::kHandeMaxForce * time_step_);
       s.world.addMultiBodyConstraint(gear.get());
       robot.gear = std::move(gear);
