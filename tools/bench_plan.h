@@ -72,7 +72,7 @@ struct BenchOptions {
   std::vector<std::string> starts{"cross", "random"};
   int seeds = 10;
   std::vector<std::string> methods{"greedy", "optimal"};
-  double greedy_budget = 60.0;   ///< wall-clock budget per greedy run [s]
+  double greedy_budget = 120.0;  ///< wall-clock budget per greedy run [s] (dashbed plan's default)
   double optimal_budget = 30.0;  ///< per MM-DaSH run [s]
   int max_rounds = 30;
   bool simulate = true;
