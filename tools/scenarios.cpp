@@ -352,7 +352,7 @@ core::World generateSorting(const SortingParams& params) {
   world.description =
       std::string(rows ? "Sorting: " : "Sorting (DaSH paper): ") + std::to_string(params.robots) +
       " UR5e + Hand-E robots " +
-      (rows                 ? "in two facing rows along a table, the bins at its ends"
+      (rows                 ? "in two facing rows along a table (the bins at its ends)"
        : params.robots == 2 ? "facing each other across a table"
                             : "in a square facing the centre") +
       " sort " + std::to_string(params.cubes) + " cubes of " + std::to_string(params.classes) +
