@@ -2,6 +2,7 @@
 // Frames and video of simulated runs, shared by the commands that simulate (render, run, sim).
 
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,6 +20,8 @@ struct VideoOptions {
   std::string video;             ///< --video: MP4
   std::string camera = "oblique";
   double fps = 30.0;
+  double from = 0.0;  ///< --from: plan time of the first frame [s]
+  std::optional<double> until;  ///< --until: plan time of the last frame [s] (default: the end)
   int width = 640;
   int height = 480;
   std::vector<double> eye;     ///< --eye X Y Z: a custom camera (with --target, --fov) instead of a preset

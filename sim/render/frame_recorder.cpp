@@ -14,6 +14,12 @@ FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& rob
   if (!(settings_.fps > 0.0) || !std::isfinite(settings_.fps)) {
     throw std::invalid_argument("RecorderSettings: fps must be positive (got " + std::to_string(settings_.fps) + ")");
   }
+  if (!(settings_.from >= 0.0) || !std::isfinite(settings_.from) || !(settings_.until >= settings_.from)) {
+    throw std::invalid_argument("RecorderSettings: the time window must have 0 <= from <= until (got from " +
+                                std::to_string(settings_.from) + " s, until " + std::to_string(settings_.until) + " s)");
+  }
+  // the first frame in the window (the tolerance as in onStep)
+  frames_ = static_cast<int>(std::ceil(settings_.from * settings_.fps - 1e-9));
   camera_ = settings_.camera ? *settings_.camera
                              : cameraPreset(world, settings_.camera_preset, settings_.width, settings_.height);
   validateCamera(camera_);
@@ -36,7 +42,8 @@ FrameRecorder::~FrameRecorder() = default;
 void FrameRecorder::onStep(const sim::Simulation& simulation, double plan_time) {
   // frame k belongs to plan time k / fps; the tolerance absorbs the rounding of summed steps
   const auto due = [&](int k) { return k / settings_.fps <= plan_time + 1e-9; };
-  if (plan_time < 0.0 || !due(frames_)) return;
+  const auto in_window = [&](int k) { return k / settings_.fps <= settings_.until + 1e-9; };
+  if (plan_time < 0.0 || !due(frames_) || !in_window(frames_)) return;
 
   std::vector<Overlay> overlays;
   if (settings_.show_time) {
@@ -49,7 +56,7 @@ void FrameRecorder::onStep(const sim::Simulation& simulation, double plan_time) 
     overlays.insert(overlays.end(), extra.begin(), extra.end());
   }
   last_frame_ = renderer_->render(captureScene(simulation), camera_, overlays);
-  while (due(frames_)) {
+  while (due(frames_) && in_window(frames_)) {
     if (settings_.out_dir) {
       char name[32];
       std::snprintf(name, sizeof(name), "frame_%06d.png", frames_);
@@ -57,6 +64,7 @@ void FrameRecorder::onStep(const sim::Simulation& simulation, double plan_time) 
     }
     if (video_) video_->add(last_frame_);
     ++frames_;
+    ++written_;
   }
 }
 

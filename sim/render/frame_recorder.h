@@ -10,6 +10,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <string>
@@ -33,6 +34,10 @@ struct RecorderSettings {
   std::optional<Camera> camera;           ///< a custom camera (its own width and height count)
   int width = 640;                        ///< preset cameras' image size [px]; even for video
   int height = 480;
+  /// Plan-time window recorded [s]: frames k with from <= k / fps <= until (a few seconds of a
+  /// long plan, to look at one handoff without rendering the rest). Files keep the index k.
+  double from = 0.0;
+  double until = std::numeric_limits<double>::infinity();
   std::optional<std::filesystem::path> out_dir;  ///< PNG frames frame_000000.png, ... (created)
   std::optional<std::filesystem::path> video;    ///< MP4 file
   bool show_time = true;                  ///< a first overlay line "t = 1.23 s" (plan time)
@@ -50,8 +55,8 @@ class FrameRecorder {
   FrameRecorder(const core::World& world, const core::RobotSet& robots, RecorderSettings settings);
   ~FrameRecorder();
 
-  /// Records frame k = 0, 1, ... at the first call with plan_time >= k / fps; calls with
-  /// negative plan time (the settle pre-roll) are ignored. When one step passes several frame
+  /// Records frame k = 0, 1, ... (those in the window from..until) at the first call with
+  /// plan_time >= k / fps; calls with negative plan time (the settle pre-roll) are ignored. When one step passes several frame
   /// times, the frame is repeated so that the video keeps simulated time. Deterministic: the
   /// frames depend only on the simulation and the plan times passed.
   void onStep(const sim::Simulation& simulation, double plan_time);
@@ -61,7 +66,7 @@ class FrameRecorder {
   /// nothing.
   void finish();
 
-  int framesWritten() const { return frames_; }
+  int framesWritten() const { return written_; }
   const Camera& camera() const { return camera_; }
   /// The last frame rendered (empty before the first).
   const Image& lastFrame() const { return last_frame_; }
@@ -72,7 +77,8 @@ class FrameRecorder {
   Camera camera_;
   std::unique_ptr<SceneRenderer> renderer_;
   std::unique_ptr<VideoWriter> video_;
-  int frames_ = 0;
+  int frames_ = 0;   ///< index of the next frame due
+  int written_ = 0;  ///< frames recorded (in the window)
   Image last_frame_;
 };
 

@@ -483,7 +483,25 @@ TEST_CASE("FrameRecorder writes one frame per 1/fps of plan time", "[render]") {
   repeated.onStep(simulation, 0.2);  // frames 1..6
   CHECK(repeated.framesWritten() == 7);
 
+  // a time window: frames 2 and 3 only (1/15 s and 0.1 s), named by their index
+  render::RecorderSettings window = settings;
+  window.out_dir = dir.path / "window";
+  window.overlays = nullptr;
+  window.from = 0.05;
+  window.until = 0.1;
+  render::FrameRecorder windowed(*world, *robots, window);
+  for (int step = 0; step <= 200; ++step) windowed.onStep(simulation, step * 0.001);
+  CHECK(windowed.framesWritten() == 2);
+  CHECK_FALSE(std::filesystem::exists(*window.out_dir / "frame_000001.png"));
+  CHECK(std::filesystem::exists(*window.out_dir / "frame_000002.png"));
+  CHECK(std::filesystem::exists(*window.out_dir / "frame_000003.png"));
+  CHECK_FALSE(std::filesystem::exists(*window.out_dir / "frame_000004.png"));
+
   render::RecorderSettings bad = settings;
   bad.fps = 0.0;
   CHECK_THROWS_WITH(render::FrameRecorder(*world, *robots, bad), Catch::Contains("fps"));
+  bad = settings;
+  bad.from = 2.0;
+  bad.until = 1.0;
+  CHECK_THROWS_WITH(render::FrameRecorder(*world, *robots, bad), Catch::Contains("time window"));
 }
