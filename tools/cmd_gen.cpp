@@ -72,8 +72,8 @@ void addGenCommand(CLI::App& app) {
       "owns class k). With --layout rows, 2..8 robots stand in two facing rows along a long "
       "table with the bins at its two ends. 'cross' starts every cube in front of a robot "
       "that cannot reach its bin, so every cube must be handed over; 'random' starts cubes "
-      "anywhere in the shared workspace. Cubes stay at least 0.1 m apart; too many cubes for the zones is an error "
-      "that says how many fit.");
+      "anywhere in the shared workspace. Cubes stay at least 0.1 m apart; too many cubes for "
+      "the zones is an error that says how many fit.");
   sort->add_option("--robots", sort_options->params.robots, "Number of robots: 2 or 4; in rows even, 2..8")
       ->check(CLI::IsMember({2, 4, 6, 8}))
       ->capture_default_str();

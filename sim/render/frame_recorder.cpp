@@ -8,6 +8,12 @@
 #include "sim/simulation.h"
 
 namespace dashbed::render {
+namespace {
+
+// Frame k belongs to plan time k / fps; this tolerance [s] absorbs the rounding of summed steps.
+constexpr double kFrameTimeTolerance = 1e-9;
+
+}  // namespace
 
 FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& robots, RecorderSettings settings)
     : world_(world), settings_(std::move(settings)) {
@@ -18,8 +24,7 @@ FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& rob
     throw std::invalid_argument("RecorderSettings: the time window must have 0 <= from <= until (got from " +
                                 std::to_string(settings_.from) + " s, until " + std::to_string(settings_.until) + " s)");
   }
-  // the first frame in the window (the tolerance as in onStep)
-  frames_ = static_cast<int>(std::ceil(settings_.from * settings_.fps - 1e-9));
+  frames_ = static_cast<int>(std::ceil(settings_.from * settings_.fps - kFrameTimeTolerance));  // first in the window
   camera_ = settings_.camera ? *settings_.camera
                              : cameraPreset(world, settings_.camera_preset, settings_.width, settings_.height);
   validateCamera(camera_);
@@ -40,9 +45,8 @@ FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& rob
 FrameRecorder::~FrameRecorder() = default;
 
 void FrameRecorder::onStep(const sim::Simulation& simulation, double plan_time) {
-  // frame k belongs to plan time k / fps; the tolerance absorbs the rounding of summed steps
-  const auto due = [&](int k) { return k / settings_.fps <= plan_time + 1e-9; };
-  const auto in_window = [&](int k) { return k / settings_.fps <= settings_.until + 1e-9; };
+  const auto due = [&](int k) { return k / settings_.fps <= plan_time + kFrameTimeTolerance; };
+  const auto in_window = [&](int k) { return k / settings_.fps <= settings_.until + kFrameTimeTolerance; };
   if (plan_time < 0.0 || !due(frames_) || !in_window(frames_)) return;
 
   std::vector<Overlay> overlays;

@@ -56,9 +56,10 @@ class FrameRecorder {
   ~FrameRecorder();
 
   /// Records frame k = 0, 1, ... (those in the window from..until) at the first call with
-  /// plan_time >= k / fps; calls with negative plan time (the settle pre-roll) are ignored. When one step passes several frame
-  /// times, the frame is repeated so that the video keeps simulated time. Deterministic: the
-  /// frames depend only on the simulation and the plan times passed.
+  /// plan_time >= k / fps; calls with negative plan time (the settle pre-roll) are ignored.
+  /// When one step passes several frame times, the frame is repeated so that the video keeps
+  /// simulated time. Deterministic: the frames depend only on the simulation and the plan
+  /// times passed.
   void onStep(const sim::Simulation& simulation, double plan_time);
 
 
