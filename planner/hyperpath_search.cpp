@@ -14,8 +14,10 @@ struct HyperpathSearch::Candidate {
   Millis start = 0;       ///< lower bound of the start (estimate), or the exact start once evaluated
   Millis remaining = 0;   ///< the object's cost to go before the transition (critical path first)
   bool exact = false;
+  /// the object has to wait for another one to be placed first (placedBefore)
+  bool waits = false;
 
-  auto key() const { return std::make_tuple(start, -remaining, transition); }
+  auto key() const { return std::make_tuple(waits, start, -remaining, transition); }
 };
 
 /// The A*-like query's frontier, kept between nextBest() calls.
@@ -56,6 +58,34 @@ HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
   updateCostToGo();
 }
 HyperpathSearch::~HyperpathSearch() = default;
+
+void HyperpathSearch::updatePlacementOrder() {
+  if (placement_order_transitions_ == graph_->numTransitions() && !placed_before_.empty()) return;
+  placement_order_transitions_ = graph_->numTransitions();
+  const int objects = graph_->taskSpace().numObjects();
+  placed_before_.assign(static_cast<std::size_t>(objects), {});
+  // the place samples so far (none is sampled for this alone) that a plan may use
+  std::vector<std::vector<int>> places(static_cast<std::size_t>(objects));
+  for (int id = 0; id < static_cast<int>(placement_order_transitions_); ++id) {
+    const TransitionSample& sample = graph_->transition(id).sample;
+    if (sample.kind == TransitionKind::kPlace && !knownUnusable(id)) places[sample.object].push_back(id);
+  }
+  for (int first = 0; first < objects; ++first) {
+    if (places[first].empty()) continue;
+    for (int then = 0; then < objects; ++then) {
+      if (then == first || !graph_->sites().goal[then]) continue;
+      const bool blocked = std::all_of(places[first].begin(), places[first].end(), [&](int id) {
+        return graph_->transition(id).sample.touches.test(ObjectSites::goalSite(then));
+      });
+      if (blocked) placed_before_[then].push_back(first);
+    }
+  }
+}
+
+const std::vector<int>& HyperpathSearch::placedBefore(int object) {
+  updatePlacementOrder();
+  return placed_before_.at(static_cast<std::size_t>(object));
+}
 
 Millis HyperpathSearch::costToGo(int object, int task_vertex) const {
   return cost_to_go_.at(object).at(task_vertex);
@@ -105,6 +135,7 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   const ObjectSites& sites = graph_->sites();
   const SiteSet occupied = history.occupied(sites.numSites());
+  updatePlacementOrder();
   std::vector<Candidate> result;
   for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = ts.hyperarcs()[h];
@@ -112,6 +143,9 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     if (!sites.goal[o]) continue;
     const TransitionHistory::ObjectState& object = history.objects[o];
     const TransitionHistory::RobotState& robot = history.robots[arc.robot];
+    const bool waits = std::any_of(placed_before_[o].begin(), placed_before_[o].end(), [&](int first) {
+      return history.objects[first].place != ObjectPlace::kGoal;
+    });
     int grasp = -1;
     Millis before = 0, after = 0;  // the object's cost to go before and after the transition
     switch (arc.kind) {
@@ -142,7 +176,7 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
         start = std::max(start, r.free + restToRestDuration(r.q, motion.start(), graph_->timing()));
       }
       if (arc.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[ObjectSites::goalSite(o)]);
-      result.push_back({id, start, before, false});
+      result.push_back({id, start, before, false, waits});
     }
   }
   return result;
@@ -424,7 +458,8 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
       std::optional<TransitionHistory> next = apply(frame.history, candidate);
       if (!next || deadlocked(*next)) continue;
       const Millis exact = next->steps.back().start;
-      if (!candidate.exact && !frame.queue.empty() && exact > frame.queue.front().start) {
+      if (!candidate.exact && !frame.queue.empty() &&
+          std::tie(candidate.waits, exact) > std::tie(frame.queue.front().waits, frame.queue.front().start)) {
         candidate.start = exact;
         candidate.exact = true;
         frame.queue.push_back(candidate);

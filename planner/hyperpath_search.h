@@ -33,7 +33,10 @@
 //  greedy()    Greedy hyperpath query: builds one history a hyperarc at a time, choosing the
 //              transition that can start earliest (list scheduling; ties: fewer remaining
 //              cost, then ids), with backtracking (depth first) when a history cannot be
-//              completed.
+//              completed. Transitions of an object whose goal site another object's places
+//              all touch come after all others while that object is not placed: a robot that
+//              picks a front object early holds it until the back one is in, and when the
+//              back one needs that robot the history is a dead end found only deep down.
 //  nextBest()  A*-like hyperpath query ordered by f = max(robot times, object time + cost to
 //              go); successive calls return complete histories in order of nondecreasing
 //              optimistic makespan (the next-best task plan of Next-Best Search, Alg. 5).
@@ -83,6 +86,10 @@ class HyperpathSearch {
 
   /// Cost-to-go of object o at task-space vertex v [ms] (infinite: -1).
   Millis costToGo(int object, int task_vertex) const;
+  /// The objects that go before `object` (see greedy()): every usable place sample of theirs
+  /// so far touches its goal site, as a place into the back of a shelf passes through the
+  /// front slot. Samples nothing for this.
+  const std::vector<int>& placedBefore(int object);
 
  private:
   struct Candidate;
@@ -117,12 +124,16 @@ class HyperpathSearch {
   bool placeBlocked(int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();
+  /// placed_before_ from the place samples so far, when there are new ones.
+  void updatePlacementOrder();
 
   MotionHypergraph* graph_;
   bool park_at_home_;
   SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
   std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
+  std::vector<std::vector<int>> placed_before_;  ///< [object] see placedBefore()
+  std::size_t placement_order_transitions_ = 0;  ///< transitions sampled when placed_before_ was made
   mutable std::vector<signed char> usable_;  ///< [transition] usable() this round: 1, 0, -1 unknown
   mutable int usable_round_ = 0;
   std::unique_ptr<AStarState> astar_;

@@ -3,6 +3,7 @@
 // and MM-DaSH against greedy. Iteration caps, no wall-clock budgets.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <string>
@@ -35,6 +36,16 @@ TEST_CASE("shelving task plans fill the back slot before the front slot in front
     found = search.greedy(budget);
   }
   REQUIRE(found.status == SearchStatus::kFound);
+  // the order the greedy query ranks its candidates by: green_k (back) before blue_k (front)
+  const auto id = [&](const std::string& name) {
+    return static_cast<int>(world.world->findObject(name) - world.world->objects.data());
+  };
+  for (const std::string k : {"0", "1"}) {
+    const std::vector<int>& before_blue = search.placedBefore(id("blue_" + k));
+    const std::vector<int>& before_green = search.placedBefore(id("green_" + k));
+    CHECK(std::count(before_blue.begin(), before_blue.end(), id("green_" + k)) == 1);
+    CHECK(std::count(before_green.begin(), before_green.end(), id("blue_" + k)) == 0);
+  }
   std::map<std::string, Millis> placed_at;  // region -> start of its place
   for (const ScheduledTransition& step : found.plan->steps) {
     const TransitionSample& sample = graph.transition(step.transition).sample;
