@@ -185,7 +185,16 @@ Camera cameraPreset(const core::World& world, std::string_view preset, int width
     const double a = azimuth_deg * kDegToRad, e = elevation_deg * kDegToRad;
     return Eigen::Vector3d(std::cos(e) * std::cos(a), std::cos(e) * std::sin(a), std::sin(e));
   };
-  if (preset == "oblique") return frameBox(bounds, -towardsEye(-60.0, 35.0), z, 40.0, width, height);
+  if (preset == "oblique") {
+    double azimuth = -60.0;
+    const auto shelf = std::find_if(world.fixtures.begin(), world.fixtures.end(),
+                                    [](const core::FixtureSpec& f) { return f.type == core::FixtureType::kShelf; });
+    if (shelf != world.fixtures.end()) {
+      const Eigen::Vector3d x_F = shelf->X_WF.linear().col(0);
+      azimuth = std::atan2(x_F.y(), x_F.x()) / kDegToRad + 210.0;
+    }
+    return frameBox(bounds, -towardsEye(azimuth, 35.0), z, 40.0, width, height);
+  }
   if (preset == "front") return frameBox(bounds, -towardsEye(-90.0, 22.0), z, 40.0, width, height);
   if (preset == "top") return frameBox(bounds, -z, Eigen::Vector3d::UnitY(), 40.0, width, height);
   if (preset.starts_with("side:")) {

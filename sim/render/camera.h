@@ -53,6 +53,8 @@ std::vector<std::string> cameraPresetNames(const core::World& world);
 
 /// A preset camera framing `world` (every corner of worldBounds inside the image):
 ///  - "oblique": a 3/4 view from the front right (azimuth -60 deg), 35 deg above the horizon;
+///    in a world with a shelf, from the shelf's open side (its -x, 30 deg to its -y) instead, so
+///    that the slots are in view rather than the back panel;
 ///  - "front":   from -y towards +y, 22 deg above the horizon;
 ///  - "top":     straight down, +x to the right and +y up in the image;
 ///  - "side:<robot>": from behind and beside the robot (its base frame's -x, -y) over its

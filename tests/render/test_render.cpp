@@ -307,6 +307,14 @@ TEST_CASE("Camera presets frame the whole world", "[render]") {
   CHECK((side.target - side.eye).dot(r1.X_WBase.linear().col(0)) > 0.0);
   CHECK(render::depthInCamera(side, r1.X_WBase.translation()) > 0.0);
 
+  // in a shelving world the oblique view looks into the shelf's open side (-x of the shelf)
+  const core::LoadedWorld shelving = core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/shelf_2r_4o.yaml");
+  const core::FixtureSpec& shelf = *shelving.world->findFixture("shelf");
+  const render::Camera into_shelf = render::cameraPreset(*shelving.world, "oblique", 640, 480);
+  CHECK((into_shelf.eye - shelf.X_WF.translation()).dot(shelf.X_WF.linear().col(0)) < 0.0);
+  const render::Camera on_table = render::cameraPreset(*world, "oblique", 640, 480);
+  CHECK(on_table.eye.x() > on_table.target.x());  // the default world: from the front right
+
   CHECK_THROWS_WITH(render::cameraPreset(*world, "side:r7"), Catch::Contains("side:r0") && Catch::Contains("side:r7"));
   CHECK_THROWS_AS(render::cameraPreset(*world, "isometric"), std::invalid_argument);
   CHECK_THROWS_AS(render::cameraPreset(*world, "top", 0, 480), std::invalid_argument);
