@@ -44,7 +44,10 @@ constexpr std::size_t kAStarSamplesPerHyperarc = 2;
 }  // namespace
 
 HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
-    : graph_(&graph), park_at_home_(park_at_home), final_occupancy_(graph.sites().numSites()) {
+    : graph_(&graph),
+      park_at_home_(park_at_home),
+      final_occupancy_(graph.sites().numSites()),
+      placed_before_(static_cast<std::size_t>(graph.taskSpace().numObjects())) {
   for (int o = 0; o < graph.sites().numObjects(); ++o) {
     final_occupancy_.set(graph.sites().goal[o] ? ObjectSites::goalSite(o) : ObjectSites::startSite(o));
   }
@@ -60,7 +63,7 @@ HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
 HyperpathSearch::~HyperpathSearch() = default;
 
 void HyperpathSearch::updatePlacementOrder() {
-  if (placement_order_transitions_ == graph_->numTransitions() && !placed_before_.empty()) return;
+  if (placement_order_transitions_ == graph_->numTransitions()) return;
   placement_order_transitions_ = graph_->numTransitions();
   const int objects = graph_->taskSpace().numObjects();
   placed_before_.assign(static_cast<std::size_t>(objects), {});
