@@ -138,17 +138,19 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     if (budget.progress) budget.progress(line);
   };
 
-  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
-  const double task_space_seconds = secondsSince(started);
-  stats.task_vertices = task_space.numVertices();
-  stats.task_hyperarcs = task_space.numHyperarcs();
-  std::unique_ptr<MotionHypergraph> graph;
+  ObjectSites sites;
   try {
-    graph = std::make_unique<MotionHypergraph>(world, task_space, settings.seed, settings.representation);
+    sites = objectSites(world);
   } catch (const std::runtime_error& e) {  // a region without room for the objects sent there
     result.reason = e.what();
     return result;
   }
+  const TaskSpaceHypergraph task_space =
+      TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites));
+  const double task_space_seconds = secondsSince(started);
+  stats.task_vertices = task_space.numVertices();
+  stats.task_hyperarcs = task_space.numHyperarcs();
+  const auto graph = std::make_unique<MotionHypergraph>(world, task_space, settings.seed, settings.representation);
   const auto record = [&] {
     stats.construction_seconds = task_space_seconds + graph->constructionSeconds();
     stats.rounds = graph->rounds();

@@ -96,4 +96,19 @@ ObjectSites objectSites(const core::LoadedWorld& loaded) {
   return sites;
 }
 
+core::ReachMap placementReach(const core::LoadedWorld& world, const ObjectSites& sites) {
+  core::ReachMap reach = world.reach;
+  for (int o = 0; o < sites.numObjects(); ++o) {
+    std::vector<int>& placers = reach.goal[static_cast<std::size_t>(o)];
+    placers.clear();
+    if (!sites.goal[o]) continue;
+    for (std::size_t r = 0; r < world.robots->size(); ++r) {
+      if (core::reachesBox((*world.robots)[r], *sites.goal[o], world.world->objects[o].size)) {
+        placers.push_back(static_cast<int>(r));
+      }
+    }
+  }
+  return reach;
+}
+
 }  // namespace dashbed::planner

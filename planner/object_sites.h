@@ -51,4 +51,10 @@ std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen
 /// objects are sent to it than fit side by side within reach of a robot.
 ObjectSites objectSites(const core::LoadedWorld& world);
 
+/// The reach map the planner's task-space hypergraph is built from: the world's (which robots
+/// reach each object's start), with the robots that may place an object being those reaching
+/// its goal site rather than the region's centre (core::ReachMap::goal). A slot off-centre may
+/// be in reach of a robot that misses the centre, and out of reach of one that reaches it.
+core::ReachMap placementReach(const core::LoadedWorld& world, const ObjectSites& sites);
+
 }  // namespace dashbed::planner

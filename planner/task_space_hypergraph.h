@@ -102,7 +102,8 @@ class TaskSpaceHypergraph {
                       const std::vector<std::vector<bool>>& overlap);
 
   /// The hypergraph of a world: robot and object names from the world, picks and places from
-  /// `reach` (core::computeReach), handoffs between robots whose workspaces overlap
+  /// `reach` (the planner passes placementReach: places by the robots reaching each object's
+  /// goal slot), handoffs between robots whose workspaces overlap
   /// (core::workspacesOverlap, a symmetric test made once per pair). Throws
   /// std::invalid_argument when `reach` does not match the world.
   static TaskSpaceHypergraph fromWorld(const core::World& world, const core::RobotSet& robots,

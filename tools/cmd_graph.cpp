@@ -14,6 +14,7 @@
 #include "core/world_loader.h"
 #include "planner/hypergraph_dot.h"
 #include "planner/motion_hypergraph.h"
+#include "planner/object_sites.h"
 #include "planner/representation_analysis.h"
 #include "planner/task_space_hypergraph.h"
 #include "tools/cli_support.h"
@@ -122,7 +123,9 @@ void runWorld(const GraphOptions& options) {
       options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(file);
   const core::World& world = *loaded.world;
-  const auto graph = planner::TaskSpaceHypergraph::fromWorld(world, *loaded.robots, loaded.reach);
+  // the planner's: place hyperarcs for the robots reaching each object's goal slot
+  const auto graph = planner::TaskSpaceHypergraph::fromWorld(
+      world, *loaded.robots, planner::placementReach(loaded, planner::objectSites(loaded)));
   const RepresentationSize bound = planner::hypergraphSize(graph.numRobots(), graph.numObjects());
   const std::optional<RepresentationSize> composite = compositeSizeOrOverflow(graph.numRobots(), graph.numObjects());
 

@@ -209,6 +209,21 @@ TEST_CASE("a pick that runs into a robot standing at home is planned around with
   CHECK(plan.actions[1].type == core::ActionType::kHandoff);
 }
 
+TEST_CASE("a goal slot only a robot missing the region's centre reaches is placed by that robot", "[planner][dash]") {
+  // r1 reaches the bin's centre, r0 only the slot the cube is given: the place is r0's
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/slot_off_centre_reach.yaml");
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  const core::Plan& plan = *result.plan;
+  requireValidActions(plan, *world.world);
+  requireNoRobotCollision(plan, world);
+  REQUIRE_FALSE(plan.actions.empty());
+  CHECK(plan.actions.back().type == core::ActionType::kPlace);
+  CHECK(plan.actions.back().robot == "r0");
+}
+
 TEST_CASE("a home constraint keeps its transition out while the robot stands at home", "[planner][dash]") {
   const core::LoadedWorld world =
       core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/idle_home_block.yaml");
