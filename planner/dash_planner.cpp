@@ -216,8 +216,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           if (graph->addSchedulingConstraint(a, b)) {
             ++feedbacks;
             ++stats.scheduling_constraints;
-            say(last_failure + nodes + "; scheduling constraint: " + describeTransition(*graph, a) + " / " +
-                describeTransition(*graph, b));
+            say(last_failure + nodes + "; scheduling constraint from a conflict no order resolved: " +
+                describeTransition(*graph, a) + " / " + describeTransition(*graph, b));
             return true;
           }
         }
@@ -225,7 +225,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           if (graph->addHomeConstraint(transition, robot)) {
             ++feedbacks;
             ++stats.scheduling_constraints;
-            say(last_failure + nodes + "; scheduling constraint: " + describeTransition(*graph, transition) + " / " +
+            say(last_failure + nodes + "; scheduling constraint from a conflict no order resolved: " +
+                describeTransition(*graph, transition) + " / " +
                 graph->world().world->robots[static_cast<std::size_t>(robot)].name + " at home");
             return true;
           }
