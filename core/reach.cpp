@@ -1,5 +1,6 @@
 #include "core/reach.h"
 
+#include <algorithm>
 #include <cmath>
 #include <sstream>
 
@@ -22,6 +23,23 @@ bool reachesBox(const PlacedRobot& robot, const Pose& X_WO, const Eigen::Vector3
   return false;
 }
 
+bool reachesPlacementIn(const PlacedRobot& robot, const Region& region, const ObjectSpec& object) {
+  if (reachesBox(robot, placementPose(region, object), object.size)) return true;
+  constexpr int kGrid = 5;
+  const double margin = 0.5 * std::max(object.size.x(), object.size.y());
+  const double half_x = std::max(0.0, 0.5 * region.size.x() - margin), half_y = std::max(0.0, 0.5 * region.size.y() - margin);
+  for (int i = 0; i < kGrid; ++i) {
+    for (int j = 0; j < kGrid; ++j) {
+      const Eigen::Vector3d p_R((2.0 * i / (kGrid - 1) - 1.0) * half_x, (2.0 * j / (kGrid - 1) - 1.0) * half_y,
+                                object.size.z() / 2);
+      Pose X_WO = region.X_WR;
+      X_WO.translation() = region.X_WR * p_R;
+      if (reachesBox(robot, X_WO, object.size)) return true;
+    }
+  }
+  return false;
+}
+
 ReachMap computeReach(const World& world, const RobotSet& robots) {
   ReachMap reach;
   reach.start.resize(world.objects.size());
@@ -31,7 +49,7 @@ ReachMap computeReach(const World& world, const RobotSet& robots) {
     const Region* region = world.goalRegionOf(object);
     for (std::size_t r = 0; r < robots.size(); ++r) {
       if (reachesBox(robots[r], object.X_WO, object.size)) reach.start[o].push_back(static_cast<int>(r));
-      if (region != nullptr && reachesBox(robots[r], placementPose(*region, object), object.size)) {
+      if (region != nullptr && reachesPlacementIn(robots[r], *region, object)) {
         reach.goal[o].push_back(static_cast<int>(r));
       }
     }

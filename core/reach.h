@@ -14,7 +14,8 @@ namespace dashbed::core {
 
 struct ReachMap {
   std::vector<std::vector<int>> start;  ///< [object] -> robots reaching its start pose
-  std::vector<std::vector<int>> goal;   ///< [object] -> robots reaching a placement in its goal region
+  /// [object] -> robots reaching a placement in its goal region (reachesPlacementIn)
+  std::vector<std::vector<int>> goal;
 };
 
 /// Where an object sits when placed in a region: centred on the region floor, region yaw.
@@ -22,6 +23,12 @@ Pose placementPose(const Region& region, const ObjectSpec& object);
 
 /// True when robot `robot` has an IK solution for some grasp of a box of `size` at X_WO.
 bool reachesBox(const PlacedRobot& robot, const Pose& X_WO, const Eigen::Vector3d& size);
+
+/// True when `robot` reaches some placement of `object` in `region`: at its centre
+/// (placementPose), or else at a point of a 5 x 5 grid over its floor, half the object's width
+/// in from the edges. A bin only partly in reach is a goal (the planner fills its reachable
+/// part); which robots may place an object is decided by its goal slot (planner/object_sites.h).
+bool reachesPlacementIn(const PlacedRobot& robot, const Region& region, const ObjectSpec& object);
 
 ReachMap computeReach(const World& world, const RobotSet& robots);
 

@@ -91,3 +91,21 @@ TEST_CASE("an object too wide for the gripper says so, not that it is out of rea
     CHECK_NOTHROW(validateWorld(world));
   }
 }
+
+TEST_CASE("a goal region whose centre is out of reach is a goal when its near part is not", "[reach]") {
+  const LoadedWorld dut = loadWorld(kRoot + "/tests/planner/worlds/bin_centre_out_of_reach.yaml");
+  const ObjectSpec& cube = dut.world->objects.front();
+  const Region& bin = *dut.world->goalRegionOf(cube);
+  const PlacedRobot& robot = (*dut.robots)[0];
+  // the premise: the centre is out of reach
+  REQUIRE_FALSE(reachesBox(robot, placementPose(bin, cube), cube.size));
+  CHECK(reachesPlacementIn(robot, bin, cube));
+  for (std::size_t o = 0; o < dut.world->objects.size(); ++o) CHECK(dut.reach.goal[o] == std::vector<int>{0});
+
+  // moved 0.3 m farther away, no part of it is within reach: the goal names its line
+  World world = loadWorldFile(kRoot + "/tests/planner/worlds/bin_centre_out_of_reach.yaml");
+  for (Region& region : world.regions) region.X_WR.translation().x() += 0.3;
+  CHECK_THROWS_WITH(validateWorld(std::move(world)),
+                    Catch::Matchers::Contains("bin_centre_out_of_reach.yaml:13:5: goals[0].region") &&
+                        Catch::Matchers::Contains("out of every robot's reach"));
+}

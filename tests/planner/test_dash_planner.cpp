@@ -224,6 +224,18 @@ TEST_CASE("a goal slot only a robot missing the region's centre reaches is place
   CHECK(plan.actions.back().robot == "r0");
 }
 
+TEST_CASE("a bin whose centre is out of reach gets its objects in its near part", "[planner][dash]") {
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/bin_centre_out_of_reach.yaml");
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  int places = 0;
+  for (const core::PlanAction& action : result.plan->actions) places += action.type == core::ActionType::kPlace;
+  CHECK(places == 2);
+}
+
 TEST_CASE("a home constraint keeps its transition out while the robot stands at home", "[planner][dash]") {
   const core::LoadedWorld world =
       core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/idle_home_block.yaml");

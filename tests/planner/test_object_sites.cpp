@@ -72,13 +72,16 @@ TEST_CASE("more objects than a region has reachable slots for is an error naming
 TEST_CASE("the robots that may place an object are those reaching its goal slot", "[planner][sites]") {
   const core::LoadedWorld world = core::loadWorld(testWorld("slot_off_centre_reach.yaml"));
   // the premise: r1 reaches the bin's centre and r0 does not
-  REQUIRE(world.reach.goal[0] == std::vector<int>{1});
+  const core::ObjectSpec& cube = world.world->objects[0];
+  const core::Pose centre = core::placementPose(*world.world->goalRegionOf(cube), cube);
+  REQUIRE(core::reachesBox((*world.robots)[1], centre, cube.size));
+  REQUIRE_FALSE(core::reachesBox((*world.robots)[0], centre, cube.size));
   const planner::ObjectSites sites = planner::objectSites(world);
   REQUIRE(sites.goal[0]);
   const core::ReachMap reach = planner::placementReach(world, sites);
   CHECK(reach.start == world.reach.start);
   // the cube's slot is one only r0 reaches
   CHECK(reach.goal[0] == std::vector<int>{0});
-  CHECK(core::reachesBox((*world.robots)[0], *sites.goal[0], world.world->objects[0].size));
-  CHECK_FALSE(core::reachesBox((*world.robots)[1], *sites.goal[0], world.world->objects[0].size));
+  CHECK(core::reachesBox((*world.robots)[0], *sites.goal[0], cube.size));
+  CHECK_FALSE(core::reachesBox((*world.robots)[1], *sites.goal[0], cube.size));
 }
