@@ -260,6 +260,15 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     return found;
   };
 
+  // per object: its place hyperarcs, and whether it was checked for being never placeable
+  std::vector<std::vector<int>> place_hyperarcs(static_cast<std::size_t>(task_space.numObjects()));
+  for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = task_space.hyperarcs()[h];
+    if (arc.kind == TransitionKind::kPlace) {
+      place_hyperarcs[static_cast<std::size_t>(arc.object)].push_back(static_cast<int>(h));
+    }
+  }
+  std::vector<bool> checked_placeable(place_hyperarcs.size(), false);
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
     feedbacks = 0;
@@ -311,6 +320,24 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       }
     }
     if (best_schedule) break;
+    // an object without any place sample after a round may be one no grasp can ever place
+    for (int o = 0; o < task_space.numObjects(); ++o) {
+      if (checked_placeable[static_cast<std::size_t>(o)] || !graph->sites().goal[o]) continue;
+      const std::vector<int>& places = place_hyperarcs[static_cast<std::size_t>(o)];
+      if (std::any_of(places.begin(), places.end(), [&](int h) { return graph->bestDuration(h).has_value(); })) {
+        continue;
+      }
+      checked_placeable[static_cast<std::size_t>(o)] = true;  // asked once: the answer never changes
+      if (graph->neverPlaceable(o)) {
+        const core::World& w = *world.world;
+        result.reason = w.objects[static_cast<std::size_t>(o)].name + " can never be placed in " +
+                        w.regions[static_cast<std::size_t>(graph->sites().goal_region[o])].name +
+                        ": no robot reaching it has a collision-free place for any grasp the object can be "
+                        "picked or handed over in (objects are never regrasped)";
+        record();
+        return result;
+      }
+    }
   }
   record();
   if (!best_schedule) {

@@ -354,6 +354,34 @@ std::vector<int> MotionHypergraph::verticesOf(int task_vertex) const {
   return ids;
 }
 
+bool MotionHypergraph::neverPlaceable(int object) {
+  const ScopedTimer timer(construction_seconds_);
+  std::vector<Grasp> held;  // every grasp the object may be held in
+  const auto hold = [&](const Grasp& grasp) {
+    const auto same = [&](const Grasp& other) { return sameGrasp(grasp, other); };
+    if (std::none_of(held.begin(), held.end(), same)) held.push_back(grasp);
+  };
+  std::vector<int> places;
+  bool handed_over = false;
+  for (std::size_t h = 0; h < task_space_->numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = task_space_->hyperarcs()[h];
+    if (arc.object != object) continue;
+    if (arc.kind == TransitionKind::kPlace) places.push_back(static_cast<int>(h));
+    if (arc.kind == TransitionKind::kHandoff) handed_over = true;
+    if (arc.kind != TransitionKind::kPick) continue;
+    for (const int id : transitionsOf(static_cast<int>(h), -1)) hold(*transition(id).sample.grasp_after);
+  }
+  for (std::size_t i = 0; handed_over && i < held.size(); ++i) {
+    for (const Grasp& grasp : sampler_->handoffGrasps(object, held[i])) hold(grasp);
+  }
+  for (const int place : places) {
+    for (const Grasp& grasp : held) {
+      if (!sampler_->place(place, grasp).empty()) return false;
+    }
+  }
+  return true;
+}
+
 std::vector<int> MotionHypergraph::unsampledHyperarcs() const {
   std::map<int, bool> sampled;  // asked for -> has a sample
   for (const auto& [key, ids] : transitions_of_) sampled[key.first] = sampled[key.first] || !ids.empty();

@@ -162,6 +162,13 @@ class MotionHypergraph {
   std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size() + home_constraints_.size(); }
   void clearSchedulingConstraints();  ///< all of them
 
+  /// True when `object` can never be placed at its goal: no robot with a place hyperarc for it
+  /// has a place sample for any grasp it could be held in — one of its pick samples' or,
+  /// through handoffs, a receiver grasp of one of those (TransitionSampler::handoffGrasps),
+  /// and so on. Picks and places are deterministic (sampled per grasp, not drawn), so no later
+  /// round can add one: the problem is infeasible. Adds nothing to the graph.
+  bool neverPlaceable(int object);
+
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
   /// growth. Returns the number of the round just completed (the first is 1).
   int expand();

@@ -713,6 +713,10 @@ std::vector<TransitionSample> TransitionSampler::place(int hyperarc, const Grasp
   return samples;
 }
 
+std::vector<Grasp> TransitionSampler::handoffGrasps(int object, const Grasp& giver) const {
+  return receiverGrasps(world_->world->objects.at(static_cast<std::size_t>(object)).size, giver);
+}
+
 std::vector<TransitionSample> TransitionSampler::handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng,
                                                          int count) {
   const TransitionHyperarc& arc = hyperarcOf(*task_space_, hyperarc, TransitionKind::kHandoff);

@@ -137,6 +137,10 @@ class TransitionSampler {
   /// the giver's IK exists), receiver grasps enumerated. Makes at most 20 count draws.
   std::vector<TransitionSample> handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng, int count);
 
+  /// The grasps a receiver may take of `object` from a giver holding it in `giver`: every
+  /// handoff sample's receiver grasp is one of them. Deterministic, fixed order.
+  std::vector<Grasp> handoffGrasps(int object, const Grasp& giver) const;
+
   const TransitionSettings& settings() const { return settings_; }
 
  private:

@@ -95,6 +95,35 @@ TEST_CASE("a robot base inside the table makes the problem infeasible and names 
   CHECK_FALSE(result.plan);
 }
 
+TEST_CASE("an object no grasp can ever place makes the problem infeasible and is named", "[planner][dash]") {
+  // a 40 mm cube sent to a shelf slot: a slot takes objects slid in from the side, and a side
+  // grasp of the cube on the table runs into the table
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/cube_to_shelf_slot.yaml");
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  CHECK(graph.neverPlaceable(0));
+  CHECK(graph.numTransitions() == graph.transitionsOf(0, -1).size());  // the picks only: nothing added
+
+  const PlanResult result = solve(world, testSettings());
+  CHECK(result.status == PlannerStatus::kInfeasible);
+  CHECK_THAT(result.reason, Contains("cube_a can never be placed in slot_a"));
+  CHECK(result.stats.rounds == 1);
+  CHECK_FALSE(result.plan);
+}
+
+TEST_CASE("objects the default and shelving worlds place are not proven never placeable", "[planner][dash]") {
+  for (const char* name : {"default.yaml", "shelf_2r_4o.yaml"}) {
+    const core::LoadedWorld world = core::loadWorld(worldPath(name));
+    const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+    MotionHypergraph graph(world, task_space, 7);
+    for (int o = 0; o < task_space.numObjects(); ++o) {
+      INFO(name << ": " << world.world->objects[static_cast<std::size_t>(o)].name);
+      CHECK_FALSE(graph.neverPlaceable(o));
+    }
+  }
+}
+
 TEST_CASE("a timeout without any task plan names the transitions that were never sampled", "[planner][dash]") {
   const core::LoadedWorld world =
       core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/handoff_too_wide.yaml");
