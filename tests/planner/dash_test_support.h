@@ -8,6 +8,10 @@
 namespace dashbed::planner::testing {
 
 inline std::string worldPath(const std::string& name) { return std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + name; }
+/// A world of the planner tests (tests/planner/worlds/).
+inline std::string testWorldPath(const std::string& name) {
+  return std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/" + name;
+}
 
 inline PlannerSettings testSettings(Method method = Method::kGreedy) {
   PlannerSettings settings;

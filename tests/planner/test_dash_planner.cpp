@@ -98,8 +98,7 @@ TEST_CASE("a robot base inside the table makes the problem infeasible and names 
 TEST_CASE("an object no grasp can ever place makes the problem infeasible and is named", "[planner][dash]") {
   // a 40 mm cube sent to a shelf slot: a slot takes objects slid in from the side, and a side
   // grasp of the cube on the table runs into the table
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/cube_to_shelf_slot.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("cube_to_shelf_slot.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
   MotionHypergraph graph(world, task_space, 7);
   CHECK(graph.neverPlaceable(0));
@@ -125,8 +124,7 @@ TEST_CASE("objects the default and shelving worlds place are not proven never pl
 }
 
 TEST_CASE("a timeout without any task plan names the transitions that were never sampled", "[planner][dash]") {
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/handoff_too_wide.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("handoff_too_wide.yaml"));
   PlannerSettings settings = testSettings();
   settings.max_rounds = 3;
   const PlanResult result = solve(world, settings);
@@ -223,8 +221,7 @@ TEST_CASE("a second scheduling constraint on the same two hyperarcs constrains a
 
 TEST_CASE("a pick that runs into a robot standing at home is planned around with a handoff", "[planner][dash]") {
   // only r1 reaches the bin, but r1 picking the cube runs into r0's gripper at home
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/idle_home_block.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("idle_home_block.yaml"));
   const PlanResult result = solve(world, testSettings());
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
@@ -240,8 +237,7 @@ TEST_CASE("a pick that runs into a robot standing at home is planned around with
 
 TEST_CASE("a goal slot only a robot missing the region's centre reaches is placed by that robot", "[planner][dash]") {
   // r1 reaches the bin's centre, r0 only the slot the cube is given: the place is r0's
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/slot_off_centre_reach.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("slot_off_centre_reach.yaml"));
   const PlanResult result = solve(world, testSettings());
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
@@ -254,8 +250,7 @@ TEST_CASE("a goal slot only a robot missing the region's centre reaches is place
 }
 
 TEST_CASE("a bin whose centre is out of reach gets its objects in its near part", "[planner][dash]") {
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/bin_centre_out_of_reach.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("bin_centre_out_of_reach.yaml"));
   const PlanResult result = solve(world, testSettings());
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
@@ -266,8 +261,7 @@ TEST_CASE("a bin whose centre is out of reach gets its objects in its near part"
 }
 
 TEST_CASE("a home constraint keeps its transition out while the robot stands at home", "[planner][dash]") {
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/idle_home_block.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("idle_home_block.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
   MotionHypergraph graph(world, task_space, 7);
   const SearchResult first = HyperpathSearch(graph).greedy({});
@@ -297,8 +291,7 @@ TEST_CASE("a home constraint keeps its transition out while the robot stands at 
 
 TEST_CASE("a place its robot cannot get home from counts as no place: the object is handed over", "[planner][dash]") {
   // r0 reaches the slots right in front of it only in poses its roadmap cannot bring home
-  const core::LoadedWorld world =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/shelf_front_slots.yaml");
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("shelf_front_slots.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
   MotionHypergraph graph(world, task_space, 7);
   SearchResult result = HyperpathSearch(graph).greedy({});
