@@ -260,15 +260,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     return found;
   };
 
-  // per object: its place hyperarcs, and whether it was checked for being never placeable
-  std::vector<std::vector<int>> place_hyperarcs(static_cast<std::size_t>(task_space.numObjects()));
-  for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
-    const TransitionHyperarc& arc = task_space.hyperarcs()[h];
-    if (arc.kind == TransitionKind::kPlace) {
-      place_hyperarcs[static_cast<std::size_t>(arc.object)].push_back(static_cast<int>(h));
-    }
-  }
-  std::vector<bool> checked_placeable(place_hyperarcs.size(), false);
+  std::vector<bool> checked_placeable(static_cast<std::size_t>(task_space.numObjects()), false);
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
     feedbacks = 0;
@@ -322,9 +314,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     if (best_schedule) break;
     // an object without any place sample after a round may be one no grasp can ever place
     for (int o = 0; o < task_space.numObjects(); ++o) {
-      if (checked_placeable[static_cast<std::size_t>(o)] || !graph->sites().goal[o]) continue;
-      const std::vector<int>& places = place_hyperarcs[static_cast<std::size_t>(o)];
-      if (std::any_of(places.begin(), places.end(), [&](int h) { return graph->bestDuration(h).has_value(); })) {
+      if (checked_placeable[static_cast<std::size_t>(o)] || !graph->sites().goal[o] || graph->hasPlaceSample(o)) {
         continue;
       }
       checked_placeable[static_cast<std::size_t>(o)] = true;  // asked once: the answer never changes

@@ -382,6 +382,13 @@ bool MotionHypergraph::neverPlaceable(int object) {
   return true;
 }
 
+bool MotionHypergraph::hasPlaceSample(int object) const {
+  return std::any_of(transitions_of_.begin(), transitions_of_.end(), [&](const auto& entry) {
+    const TransitionHyperarc& arc = task_space_->hyperarcs().at(static_cast<std::size_t>(entry.first.first));
+    return arc.kind == TransitionKind::kPlace && arc.object == object && !entry.second.empty();
+  });
+}
+
 std::vector<int> MotionHypergraph::unsampledHyperarcs() const {
   std::map<int, bool> sampled;  // asked for -> has a sample
   for (const auto& [key, ids] : transitions_of_) sampled[key.first] = sampled[key.first] || !ids.empty();

@@ -168,6 +168,8 @@ class MotionHypergraph {
   /// and so on. Picks and places are deterministic (sampled per grasp, not drawn), so no later
   /// round can add one: the problem is infeasible. Adds nothing to the graph.
   bool neverPlaceable(int object);
+  /// True when some place hyperarc of `object` has a sample (for any grasp asked for so far).
+  bool hasPlaceSample(int object) const;
 
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
   /// growth. Returns the number of the round just completed (the first is 1).
