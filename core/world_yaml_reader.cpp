@@ -228,11 +228,13 @@ class Reader {
   // whole-world checks
   void checkGoals(const World& world) const;
   void checkStartPoses(const World& world) const;
+  void checkRobotBases(const World& world) const;
 
   std::string file_;
   std::vector<NameUse> names_;
   std::vector<GoalUse> goal_uses_;
   std::vector<Field> object_poses_;
+  std::vector<Field> robot_bases_;
 };
 
 // ---- scalar values ----------------------------------------------------------------------
@@ -417,6 +419,7 @@ RobotSpec Reader::robot(const Field& field) {
   robot.name = name(map);
   robot.model = identifier(map.require("model"));
   robot.X_WBase = robotBase(map.require("base"));
+  robot_bases_.push_back(map.require("base"));
   robot.home = kDefaultRobotHome;
   if (const auto home = map.get("home")) {
     const std::vector<double> q = numbers(*home, 6);
@@ -687,7 +690,23 @@ World Reader::read(const YAML::Node& root) {
   deriveFixtureGeometry(world);
   checkGoals(world);
   checkStartPoses(world);
+  checkRobotBases(world);
   return world;
+}
+
+void Reader::checkRobotBases(const World& world) const {
+  // the base frame is the bottom of the mounting flange: on a fixture's top at most, not inside
+  for (std::size_t i = 0; i < world.robots.size(); ++i) {
+    const Eigen::Vector3d p_WB = world.robots[i].X_WBase.translation();
+    for (const FixtureSpec& fixture : world.fixtures) {
+      for (const Box& part : fixture.boxes) {
+        if (pointInBox(p_WB, part, -kMaxPenetration)) {
+          fail(robot_bases_[i], "robot '" + world.robots[i].name + "' is mounted inside fixture '" + fixture.name +
+                                    "' (its base must rest on a fixture's top, not inside it)");
+        }
+      }
+    }
+  }
 }
 
 void Reader::checkGoals(const World& world) const {

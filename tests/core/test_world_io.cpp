@@ -354,6 +354,8 @@ const BadWorld kBadWorlds[] = {
     {"object_in_bin_wall.yaml", "object_in_bin_wall.yaml:22:11: objects[0].pose: 'cube_0' penetrates fixture 'bin_red' by"},
     {"objects_overlap.yaml", "objects_overlap.yaml:24:11: objects[1].pose: 'cube_1' overlaps object 'cube_0' (line 22) by"},
     {"object_floating.yaml", "object_floating.yaml:22:11: objects[0].pose: 'cube_0' does not rest on any stable surface (bottom face at z = 0.8000 m must be within 2.0 mm of a surface under its centre); the nearest surface under it, 'table/top' at z = 0.7500 m, is 50.0 mm below its bottom face"},
+    // robots
+    {"robot_in_table.yaml", "robot_in_table.yaml:7:11: robots[0].base: robot 'r0' is mounted inside fixture 'table' (its base must rest on a fixture's top, not inside it)"},
     {"object_off_table.yaml", "object_off_table.yaml:22:11: objects[0].pose: 'cube_0' does not rest on any stable surface (bottom face at z = 0.7500 m must be within 2.0 mm of a surface under its centre); no stable surface lies under its centre"},
 };
 
@@ -519,7 +521,7 @@ TEST_CASE("robot bases with any roll and pitch: written text is stable", "[world
   std::uniform_real_distribution<double> angle(-3.14, 3.14), pitch(-1.3, 1.3);
   for (int trial = 0; trial < 200; ++trial) {
     const Eigen::Vector3d rpy{angle(rng), pitch(rng), angle(rng)};
-    world.robots[0].X_WBase = makePose({0.1, 0.2, 0.3}, rpy);
+    world.robots[0].X_WBase = makePose({0.1, 0.2, 1.3}, rpy);  // above the table (a ceiling mount)
     const std::string text = writeWorldYaml(world);
     const World reread = parseWorldYaml(text, "written.yaml");
     INFO("rpy " << rpy.transpose());
