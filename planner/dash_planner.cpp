@@ -312,18 +312,22 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       }
     }
     if (best_schedule) break;
-    // an object without any place sample after a round may be one no grasp can ever place
+    // an object without any place sample after a round may be one no grasp can ever place; so
+    // may any object while no task plan has been found at all (its place samples may be for
+    // grasps the placing robot can never come to hold)
     for (int o = 0; o < task_space.numObjects(); ++o) {
-      if (checked_placeable[static_cast<std::size_t>(o)] || !graph->sites().goal[o] || graph->hasPlaceSample(o)) {
+      if (checked_placeable[static_cast<std::size_t>(o)] || !graph->sites().goal[o] ||
+          (graph->hasPlaceSample(o) && stats.task_plans > 0)) {
         continue;
       }
       checked_placeable[static_cast<std::size_t>(o)] = true;  // asked once: the answer never changes
       if (graph->neverPlaceable(o)) {
         const core::World& w = *world.world;
-        result.reason = w.objects[static_cast<std::size_t>(o)].name + " can never be placed in " +
-                        w.regions[static_cast<std::size_t>(graph->sites().goal_region[o])].name +
-                        ": no robot reaching it has a collision-free place for any grasp the object can be "
-                        "picked or handed over in (objects are never regrasped)";
+        const std::string& object = w.objects[static_cast<std::size_t>(o)].name;
+        const std::string& region = w.regions[static_cast<std::size_t>(graph->sites().goal_region[o])].name;
+        result.reason = object + " can never be placed in " + region + ": no robot that reaches " + region +
+                        " can hold " + object + " in a grasp it has a collision-free place for (grasps come only "
+                        "from picks and handoffs; nothing is regrasped)";
         record();
         return result;
       }

@@ -356,27 +356,33 @@ std::vector<int> MotionHypergraph::verticesOf(int task_vertex) const {
 
 bool MotionHypergraph::neverPlaceable(int object) {
   const ScopedTimer timer(construction_seconds_);
-  std::vector<Grasp> held;  // every grasp the object may be held in
-  const auto hold = [&](const Grasp& grasp) {
-    const auto same = [&](const Grasp& other) { return sameGrasp(grasp, other); };
-    if (std::none_of(held.begin(), held.end(), same)) held.push_back(grasp);
+  // every robot and grasp the object may be held in: picked, or handed over from a robot
+  // holding it (the receiver's grasp is one of handoffGrasps of the giver's), and so on
+  std::vector<std::pair<int, Grasp>> held;
+  const auto hold = [&](int robot, const Grasp& grasp) {
+    const auto same = [&](const auto& other) { return other.first == robot && sameGrasp(grasp, other.second); };
+    if (std::none_of(held.begin(), held.end(), same)) held.emplace_back(robot, grasp);
   };
-  std::vector<int> places;
-  bool handed_over = false;
+  std::vector<const TransitionHyperarc*> places, handoffs;
   for (std::size_t h = 0; h < task_space_->numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = task_space_->hyperarcs()[h];
     if (arc.object != object) continue;
-    if (arc.kind == TransitionKind::kPlace) places.push_back(static_cast<int>(h));
-    if (arc.kind == TransitionKind::kHandoff) handed_over = true;
+    if (arc.kind == TransitionKind::kPlace) places.push_back(&arc);
+    if (arc.kind == TransitionKind::kHandoff) handoffs.push_back(&arc);
     if (arc.kind != TransitionKind::kPick) continue;
-    for (const int id : transitionsOf(static_cast<int>(h), -1)) hold(*transition(id).sample.grasp_after);
+    for (const int id : transitionsOf(static_cast<int>(h), -1)) hold(arc.robot, *transition(id).sample.grasp_after);
   }
-  for (std::size_t i = 0; handed_over && i < held.size(); ++i) {
-    for (const Grasp& grasp : sampler_->handoffGrasps(object, held[i])) hold(grasp);
+  for (std::size_t i = 0; i < held.size(); ++i) {
+    const auto [giver, grasp] = held[i];  // a copy: hold() may grow the list
+    for (const TransitionHyperarc* arc : handoffs) {
+      if (arc->robot != giver) continue;
+      for (const Grasp& received : sampler_->handoffGrasps(object, grasp)) hold(arc->receiver, received);
+    }
   }
-  for (const int place : places) {
-    for (const Grasp& grasp : held) {
-      if (!sampler_->place(place, grasp).empty()) return false;
+  for (const TransitionHyperarc* place : places) {
+    const int id = static_cast<int>(place - task_space_->hyperarcs().data());
+    for (const auto& [robot, grasp] : held) {
+      if (robot == place->robot && !sampler_->place(id, grasp).empty()) return false;
     }
   }
   return true;

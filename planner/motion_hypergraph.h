@@ -163,10 +163,13 @@ class MotionHypergraph {
   void clearSchedulingConstraints();  ///< all of them
 
   /// True when `object` can never be placed at its goal: no robot with a place hyperarc for it
-  /// has a place sample for any grasp it could be held in — one of its pick samples' or,
-  /// through handoffs, a receiver grasp of one of those (TransitionSampler::handoffGrasps),
-  /// and so on. Picks and places are deterministic (sampled per grasp, not drawn), so no later
-  /// round can add one: the problem is infeasible. Adds nothing to the graph.
+  /// has a place sample for any grasp that robot could hold it in — one of its own pick
+  /// samples' or, through a handoff hyperarc from a robot that could hold it, a receiver grasp
+  /// of that robot's grasp (TransitionSampler::handoffGrasps), and so on. Picks and places are
+  /// deterministic (sampled per grasp, not drawn) and receiver grasps a fixed list, so no later
+  /// round can add one: the problem is infeasible (e.g. a box with only one face pair narrow
+  /// enough for the gripper, which one robot picks and only another can place: no handoff can
+  /// give the receiver a different face pair). Adds nothing to the graph.
   bool neverPlaceable(int object);
   /// True when some place hyperarc of `object` has a sample (for any grasp asked for so far).
   bool hasPlaceSample(int object) const;

@@ -111,6 +111,30 @@ TEST_CASE("an object no grasp can ever place makes the problem infeasible and is
   CHECK_FALSE(result.plan);
 }
 
+TEST_CASE("a box only one robot can hold, and only another can place, makes the problem infeasible",
+          "[planner][dash]") {
+  // r1 picks the box by its only narrow face pair; a handoff would give r0 another pair. Once r0
+  // has placed the cube, the box has place samples (for r1's grasps), but no task plan exists
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("flat_box_handoff.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  std::set<int> pickers;  // robots with a pick sample of the box
+  for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = task_space.hyperarcs()[h];
+    if (arc.kind == TransitionKind::kPick && arc.object == 0 && !graph.transitionsOf(static_cast<int>(h), -1).empty()) {
+      pickers.insert(arc.robot);
+    }
+  }
+  REQUIRE(pickers == std::set<int>{1});
+  CHECK(graph.neverPlaceable(0));
+  CHECK_FALSE(graph.neverPlaceable(1));  // the cube r0 picks and places itself
+
+  const PlanResult result = solve(world, testSettings());
+  CHECK(result.status == PlannerStatus::kInfeasible);
+  CHECK_THAT(result.reason, Contains("box_0 can never be placed in bin_a"));
+  CHECK(result.stats.rounds == 1);
+}
+
 TEST_CASE("objects the default and shelving worlds place are not proven never placeable", "[planner][dash]") {
   for (const char* name : {"default.yaml", "shelf_2r_4o.yaml"}) {
     const core::LoadedWorld world = core::loadWorld(worldPath(name));
