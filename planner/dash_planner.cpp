@@ -269,37 +269,47 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at
     // home; a new scheduling constraint starts the queries again
     std::uint64_t unconstrained_expansions = 0;  // of the last plan found without constraints
+    const auto greedy_query = [&](QueryMode mode) {
+      static const char* const modes[] = {"", ", idle robots parking at home", ", one object at a time"};
+      say(std::string("greedy query") + modes[static_cast<int>(mode)] + ", " +
+          std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
+      SearchBudget query_budget = search_budget;
+      if (graph->numSchedulingConstraints() > 0) {
+        query_budget.max_expansions = constrainedSearchExpansions(settings, round, unconstrained_expansions);
+      }
+      HyperpathSearch query(*graph, mode);
+      const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
+      if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {
+        unconstrained_expansions = greedy.expansions;
+      }
+      if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
+      if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
+      return greedy;
+    };
     for (bool again = true; again && !best_schedule && !time_up();) {
       again = false;
-      for (const bool park : {false, true}) {
-        HyperpathSearch query(*graph, park);
-        say(std::string("greedy query") + (park ? ", idle robots parking at home" : "") + ", " +
-            std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
-        SearchBudget query_budget = search_budget;
-        if (graph->numSchedulingConstraints() > 0) {
-          query_budget.max_expansions = constrainedSearchExpansions(settings, round, unconstrained_expansions);
-        }
-        const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
-        if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {
-          unconstrained_expansions = greedy.expansions;
-        }
+      for (const QueryMode mode : {QueryMode::kDirect, QueryMode::kParkAtHome}) {
+        const SearchResult greedy = greedy_query(mode);
         if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan);
-        if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
-        if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
-        if (greedy.status != SearchStatus::kFound) {
-          // a pair conflict resolution could not order in one history may be ordered in
-          // another: constraints that leave no task plan (within the budget) are dropped
-          // (and none comes back this round: the same plan would bring the same pair)
-          if (graph->numSchedulingConstraints() > 0) {
-            say("scheduling constraints dropped");
-            graph->clearSchedulingConstraints();
-            feedbacks = settings.scheduling_constraints_per_round;
-            again = true;
-            break;
-          }
+        // a pair conflict resolution could not order in one history may be ordered in another:
+        // constraints that leave no task plan (within the budget) are dropped (and none comes
+        // back this round: the same plan would bring the same pair)
+        if (greedy.status != SearchStatus::kFound && graph->numSchedulingConstraints() > 0) {
+          say("scheduling constraints dropped");
+          graph->clearSchedulingConstraints();
+          feedbacks = settings.scheduling_constraints_per_round;
+          again = true;
+          break;
         }
         if (again || best_schedule || time_up()) break;
       }
+    }
+    // the last resort of the round: the sequential plan, its own scheduling constraints (most
+    // often a robot waiting at home in the way of another's transition) starting it again
+    feedbacks = 0;
+    for (bool again = !best_schedule; again && !time_up();) {
+      const SearchResult greedy = greedy_query(QueryMode::kSequential);
+      again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
     }
     // Next-Best Search: task plans in order of optimistic makespan until no better is possible
     for (bool again = settings.method == Method::kOptimal; again && !time_up();) {

@@ -43,9 +43,9 @@ constexpr std::size_t kAStarSamplesPerHyperarc = 2;
 
 }  // namespace
 
-HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
+HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode)
     : graph_(&graph),
-      park_at_home_(park_at_home),
+      mode_(mode),
       final_occupancy_(graph.sites().numSites()),
       placed_before_(static_cast<std::size_t>(graph.taskSpace().numObjects())) {
   for (int o = 0; o < graph.sites().numObjects(); ++o) {
@@ -61,6 +61,12 @@ HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, bool park_at_home)
   updateCostToGo();
 }
 HyperpathSearch::~HyperpathSearch() = default;
+
+TransitionHistory HyperpathSearch::source() const {
+  TransitionHistory history = TransitionHistory::source(*graph_);
+  history.sequential = mode_ == QueryMode::kSequential;
+  return history;
+}
 
 void HyperpathSearch::updatePlacementOrder() {
   if (placement_order_transitions_ == graph_->numTransitions()) return;
@@ -139,6 +145,8 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
   const ObjectSites& sites = graph_->sites();
   const SiteSet occupied = history.occupied(sites.numSites());
   updatePlacementOrder();
+  const bool holding = std::any_of(history.robots.begin(), history.robots.end(),
+                                   [](const TransitionHistory::RobotState& r) { return r.object >= 0; });
   std::vector<Candidate> result;
   for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = ts.hyperarcs()[h];
@@ -146,9 +154,11 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     if (!sites.goal[o]) continue;
     const TransitionHistory::ObjectState& object = history.objects[o];
     const TransitionHistory::RobotState& robot = history.robots[arc.robot];
+    // after the others: an object whose goal needs another placed first, and in a sequential
+    // history a second object on the move
     const bool waits = std::any_of(placed_before_[o].begin(), placed_before_[o].end(), [&](int first) {
       return history.objects[first].place != ObjectPlace::kGoal;
-    });
+    }) || (history.sequential && arc.kind == TransitionKind::kPick && holding);
     int grasp = -1;
     Millis before = 0, after = 0;  // the object's cost to go before and after the transition
     switch (arc.kind) {
@@ -194,7 +204,7 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
   if (after < before) return true;
   // away from the goal only out of a hand that cannot place the object, and never back to a
   // robot that held it before (the two would hand it back and forth)
-  if (!placeBlocked(arc.robot, o, history.robots[arc.robot].grasp)) return false;
+  if (!placeBlocked(history, arc.robot, o, history.robots[arc.robot].grasp)) return false;
   return std::none_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
     const TransitionSample& sample = graph_->transition(step.transition).sample;
     return sample.object == o && sample.kind != TransitionKind::kPlace && sample.motions.back().robot == arc.receiver;
@@ -225,19 +235,30 @@ bool HyperpathSearch::usable(int transition) {
 
 bool HyperpathSearch::knownUnusable(int transition) const { return usableEntry(transition) == 0; }
 
-bool HyperpathSearch::placeBlocked(int robot, int object, int grasp) const {
+bool HyperpathSearch::placeBlocked(const TransitionHistory& history, int robot, int object, int grasp) const {
   const int place = place_hyperarc_[static_cast<std::size_t>(robot * graph_->taskSpace().numObjects() + object)];
   // no place hyperarc: the cost to go says where the object should go
   if (place < 0) return false;
   const std::vector<int>& ids = graph_->transitionsOf(place, grasp);
-  return std::all_of(ids.begin(), ids.end(), [&](int id) { return knownUnusable(id); });
+  return std::all_of(ids.begin(), ids.end(), [&](int id) {
+    const SiteSet& touches = graph_->transition(id).sample.touches;
+    const bool filled = std::any_of(history.objects.begin(), history.objects.end(), [&](const auto& other) {
+      const int b = static_cast<int>(&other - history.objects.data());
+      return other.place == ObjectPlace::kGoal && touches.test(ObjectSites::goalSite(b));
+    });
+    return filled || knownUnusable(id);
+  });
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
   const auto& robots = graph_->world().world->robots;
+  const std::vector<TransitionMotion>& motions = graph_->transition(transition).sample.motions;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
-    // a robot that has not acted yet stands at home
-    const bool at_home = history.robots[r].free == 0 && history.robots[r].q == robots[r].home;
+    // a robot that has not acted yet stands at home; in a sequential history, every robot the
+    // transition does not need waits there
+    const bool at_home = history.sequential ? std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) {
+      return m.robot == static_cast<int>(r);
+    }) : history.robots[r].free == 0 && history.robots[r].q == robots[r].home;
     if (at_home && graph_->homeConflict(transition, static_cast<int>(r))) return true;
   }
   return std::any_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
@@ -276,11 +297,21 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
     // the way to the transition's start: direct, or home first to wait out of the way
     const core::ArmConfig& home = graph_->world().world->robots[motion.robot].home;
     std::vector<core::ArmConfig> stops{r.q, motion.start()};
-    if (park_at_home_ && r.object < 0 && r.q != home && motion.start() != home) stops = {r.q, home, motion.start()};
+    // in a sequential history a robot waits at home (holding its object, if any) while other
+    // robots' steps run: it went home after its last step unless it had the step just before
+    bool park = mode_ != QueryMode::kDirect && r.object < 0;
+    if (history.sequential && !history.steps.empty()) {
+      const std::vector<TransitionMotion>& last = graph_->transition(history.steps.back().transition).sample.motions;
+      park = std::none_of(last.begin(), last.end(), [&](const TransitionMotion& m) { return m.robot == motion.robot; });
+    }
+    if (park && r.q != home && motion.start() != home) stops = {r.q, home, motion.start()};
     std::vector<const Move*> moves;
     Millis t = r.free;
+    if (history.sequential) {  // once the step before has ended
+      for (const TransitionHistory::RobotState& other : history.robots) t = std::max(t, other.free);
+    }
     for (std::size_t k = 1; k < stops.size(); ++k) {
-      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied);
+      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied, history.sequential);
       if (move == nullptr) return std::nullopt;
       t = after_left(move->touches, t);
       mark_busy(move->touches, t + move->duration);
@@ -332,7 +363,8 @@ std::optional<TransitionHistory> HyperpathSearch::finish(const TransitionHistory
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     const TransitionHistory::RobotState& robot = history.robots[r];
     const core::ArmConfig& home = graph_->world().world->robots[r].home;
-    const Move* move = robot.q == home ? nullptr : graph_->move(static_cast<int>(r), -1, -1, robot.q, home, occupied);
+    const Move* move =
+        robot.q == home ? nullptr : graph_->move(static_cast<int>(r), -1, -1, robot.q, home, occupied, history.sequential);
     if (robot.q != home && move == nullptr) return std::nullopt;
     done.home_moves.push_back(move);
     done.home_starts.push_back(robot.free);
@@ -383,6 +415,14 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   for (std::size_t o = 0; o < history.objects.size(); ++o) {
     const int oi = static_cast<int>(o);
     if (!graph_->sites().goal[o] || history.objects[o].place == ObjectPlace::kGoal) continue;
+    if (history.objects[o].place == ObjectPlace::kStart) {  // every pick reaches over a filled goal site
+      bool pickable = false;
+      for (std::size_t h = 0; h < ts.numHyperarcs() && !pickable; ++h) {
+        const TransitionHyperarc& arc = ts.hyperarcs()[h];
+        if (arc.kind == TransitionKind::kPick && arc.object == oi) pickable = available(h, -1);
+      }
+      if (!pickable) return true;
+    }
     bool placeable = false;
     for (std::size_t h = 0; h < ts.numHyperarcs() && !placeable; ++h) {
       const TransitionHyperarc& arc = ts.hyperarcs()[h];
@@ -429,7 +469,7 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
   const ObjectSites& sites = graph_->sites();
   SearchResult result;
   std::vector<Frame> stack;
-  stack.push_back({TransitionHistory::source(*graph_), {}, false});
+  stack.push_back({source(), {}, false});
   while (!stack.empty()) {
     if (result.expansions >= budget.max_expansions || (budget.stop && budget.stop())) {
       result.status = SearchStatus::kBudget;
@@ -486,7 +526,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
   const ObjectSites& sites = graph_->sites();
   if (!astar_) {
     astar_ = std::make_unique<AStarState>();
-    astar_->nodes.push_back(TransitionHistory::source(*graph_));
+    astar_->nodes.push_back(source());
     astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
   }
   AStarState& a = *astar_;

@@ -71,13 +71,22 @@ struct SearchResult {
   std::uint64_t expansions = 0;
 };
 
+/// How the robots of a plan share the workspace. The later modes are fallbacks for when conflict
+/// resolution cannot order the robots of the plans before them.
+enum class QueryMode {
+  kDirect,      ///< every robot goes straight from one transition to the next
+  kParkAtHome,  ///< a robot without an object goes home between transitions, to wait out of the way
+  /// the steps run one after another (TransitionHistory::sequential): only the robots of one
+  /// step move at any time, the others wait at home (holding their object, if any); a second
+  /// object is picked up only when no other choice is left
+  kSequential,
+};
+
 class HyperpathSearch {
  public:
   /// `graph` is extended on demand (transitions sampled, moves planned) and must outlive the
-  /// search. With `park_at_home`, a robot without an object goes home between transitions, so
-  /// that it waits there rather than where it may block others (a fallback when conflict
-  /// resolution cannot order the robots of the direct schedule).
-  explicit HyperpathSearch(MotionHypergraph& graph, bool park_at_home = false);
+  /// search.
+  explicit HyperpathSearch(MotionHypergraph& graph, QueryMode mode = QueryMode::kDirect);
   ~HyperpathSearch();
 
   SearchResult greedy(const SearchBudget& budget);
@@ -94,6 +103,8 @@ class HyperpathSearch {
  private:
   struct Candidate;
   struct AStarState;
+  /// The virtual source's history in this query's mode.
+  TransitionHistory source() const;
   std::vector<Candidate> candidates(const TransitionHistory& history);
   std::optional<TransitionHistory> apply(const TransitionHistory& history, const Candidate& candidate);
   std::optional<TransitionHistory> finish(const TransitionHistory& history);
@@ -120,15 +131,16 @@ class HyperpathSearch {
   /// This round's entry of `transition` in usable_ (the cache is cleared when a round begins).
   signed char& usableEntry(int transition) const;
   /// `robot` has a place hyperarc for `object` but no sample of it for `grasp` (sampled on
-  /// demand) that is not known to be unusable.
-  bool placeBlocked(int robot, int object, int grasp) const;
+  /// demand) that is not known to be unusable and keeps clear of the goal sites the history
+  /// has filled (objects stay at their goals).
+  bool placeBlocked(const TransitionHistory& history, int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
   void updateCostToGo();
   /// placed_before_ from the place samples so far, when there are new ones.
   void updatePlacementOrder();
 
   MotionHypergraph* graph_;
-  bool park_at_home_;
+  QueryMode mode_;
   SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
   std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable

@@ -190,18 +190,35 @@ Roadmap& MotionHypergraph::roadmap(int robot, int object, int grasp) {
 }
 
 const Move* MotionHypergraph::move(int robot, int object, int grasp, const core::ArmConfig& from,
-                                   const core::ArmConfig& to, const SiteSet& occupied) {
+                                   const core::ArmConfig& to, const SiteSet& occupied, bool around_homes) {
   std::vector<bool> occupied_bits(static_cast<std::size_t>(sites_.numSites()));
   for (int s = 0; s < sites_.numSites(); ++s) occupied_bits[s] = occupied.test(s);
-  const auto key = std::make_tuple(robot, object, grasp, from, to, occupied_bits);
+  const auto key = std::make_tuple(robot, object, grasp, from, to, occupied_bits, around_homes);
   if (const auto it = moves_.find(key); it != moves_.end()) return it->second ? &*it->second : nullptr;
 
   const ScopedTimer timer(construction_seconds_);
   std::optional<Move> result;
   Roadmap& map = roadmap(robot, object, grasp);
+  Roadmap::MotionFilter clear;
+  if (around_homes) {
+    if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
+    const auto& robots = world_->world->robots;
+    clear = [&, robot](const core::ArmConfig& a, const core::ArmConfig& b) {
+      const Eigen::VectorXd qa = map.fullConfiguration(a), qb = map.fullConfiguration(b);
+      for (std::size_t other = 0; other < robots.size(); ++other) {
+        if (static_cast<int>(other) == robot) continue;
+        Eigen::VectorXd home = Eigen::VectorXd::Constant(scene_->numPositions(static_cast<int>(other)), kFingersOpen);
+        for (int j = 0; j < 6; ++j) home[j] = robots[other].home[static_cast<std::size_t>(j)];
+        if (!checker_->motionsFree(robot, qa, qb, map.held(), static_cast<int>(other), home, home, std::nullopt)) {
+          return false;
+        }
+      }
+      return true;
+    };
+  }
   const int a = map.addConfiguration(from), b = map.addConfiguration(to);
   std::optional<std::vector<core::ArmConfig>> path;
-  if (a >= 0 && b >= 0) path = a == b ? std::vector<core::ArmConfig>{from} : map.query(a, b, occupied);
+  if (a >= 0 && b >= 0) path = a == b ? std::vector<core::ArmConfig>{from} : map.query(a, b, occupied, clear);
   // a roadmap that does not connect them yet grows a little on the spot
   int& grown = grown_this_round_[std::make_tuple(robot, object, grasp)];
   // (uniformly, and near both ends: one of them may sit in a pocket, e.g. the arm in a shelf)
@@ -211,7 +228,7 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
     map.growNear(from, near, settings_.move_growth_spread);
     map.growNear(to, near, settings_.move_growth_spread);
     grown += settings_.move_growth_samples;
-    path = map.query(a, b, occupied);
+    path = map.query(a, b, occupied, clear);
   }
   if (path) result = makeMove(robot, object, grasp, std::move(*path), occupied);
   const auto it = moves_.emplace(key, std::move(result)).first;
@@ -249,6 +266,16 @@ const Move* MotionHypergraph::detour(const Move& original, const Roadmap::Motion
   const int a = map.addConfiguration(original.path.front()), b = map.addConfiguration(original.path.back());
   if (a < 0 || b < 0 || a == b) return nullptr;
   std::optional<std::vector<core::ArmConfig>> path = map.query(a, b, original.occupied, clear);
+  // the roadmap grows for it as for a move (within the same allowance per round)
+  int& grown = grown_this_round_[std::make_tuple(original.robot, original.object, original.grasp)];
+  while (!path && grown < settings_.move_growth_attempts * settings_.move_growth_samples) {
+    const int near = settings_.move_growth_samples / 4;
+    map.grow(settings_.move_growth_samples - 2 * near);
+    map.growNear(original.path.front(), near, settings_.move_growth_spread);
+    map.growNear(original.path.back(), near, settings_.move_growth_spread);
+    grown += settings_.move_growth_samples;
+    path = map.query(a, b, original.occupied, clear);
+  }
   if (!path) return nullptr;
   detours_.push_back(makeMove(original.robot, original.object, original.grasp, std::move(*path), original.occupied));
   return &detours_.back();

@@ -127,8 +127,10 @@ class MotionHypergraph {
   /// The move hyperarc taking `robot` (alone when object == -1, else holding `object` in
   /// `grasp`) from `from` to `to` without touching any `occupied` site, or nullptr when the
   /// element's roadmap does not connect them yet. Cached; the pointer stays valid.
+  /// With `around_homes`, the path also keeps clear of every other robot standing at its home
+  /// configuration with its gripper open (a sequential plan's idle robots).
   const Move* move(int robot, int object, int grasp, const core::ArmConfig& from, const core::ArmConfig& to,
-                   const SiteSet& occupied);
+                   const SiteSet& occupied, bool around_homes = false);
 
   /// `original` planned again on its roadmap, with every straight piece also passing `clear`
   /// (conflict resolution's detour around other robots), or nullptr when the roadmap has no
@@ -216,6 +218,7 @@ class MotionHypergraph {
   std::uint64_t seed_;
   RepresentationSettings settings_;
   std::unique_ptr<CollisionScene> scene_;
+  std::unique_ptr<CollisionChecker> checker_;  // for move(..., around_homes)
   ObjectSites sites_;
   std::unique_ptr<TransitionSampler> sampler_;
   TimingLimits timing_;
@@ -229,7 +232,7 @@ class MotionHypergraph {
   std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
-  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>>, std::optional<Move>> moves_;  // cache of move()
+  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>, bool>, std::optional<Move>> moves_;  // cache of move()
   std::deque<Move> detours_;  // made by detour()
   std::deque<Move> retired_moves_;  // moves of earlier rounds (pointers to them stay valid)
   std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)

@@ -237,24 +237,30 @@ std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const Tra
   std::vector<ScheduleSegment> segments;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     const int robot = static_cast<int>(r);
+    int last = -1;  // the robot's last transition so far
     for (std::size_t i = 0; i < history.steps.size(); ++i) {
       const ScheduledTransition& step = history.steps[i];
       const TransitionSample& sample = graph.transition(step.transition).sample;
+      const int here = static_cast<int>(i);
       for (std::size_t m = 0; m < sample.motions.size(); ++m) {
         if (sample.motions[m].robot != robot) continue;
-        for (const Move* move : step.moves[m]) {
-          if (move->duration > 0) segments.push_back(move_segment(robot, move, static_cast<int>(i)));
+        const std::vector<const Move*>& moves = step.moves[m];
+        for (std::size_t k = 0; k < moves.size(); ++k) {
+          if (moves[k]->duration == 0) continue;
+          segments.push_back(move_segment(robot, moves[k], here));
+          segments.back().phase = k + 1 < moves.size() ? last : here;  // parking at home on the way
         }
         ScheduleSegment seg;
         seg.robot = robot;
         seg.motion = &sample.motions[m];
-        seg.step = static_cast<int>(i);
+        seg.step = seg.phase = last = here;
         seg.duration = sample.duration;
         segments.push_back(seg);
       }
     }
     if (history.home_moves[r] != nullptr && history.home_moves[r]->duration > 0) {
       segments.push_back(move_segment(robot, history.home_moves[r], -1));
+      segments.back().phase = last;
     }
   }
   return segments;
@@ -299,6 +305,15 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
       }
       if (touches.test(ObjectSites::goalSite(b)) && place_of[b] >= 0 && place_of[b] != s) {
         edges.push_back({s, place_of[b], seg.duration});
+      }
+    }
+  }
+  if (history.sequential) {  // each phase after the one before
+    std::vector<std::vector<int>> phases(history.steps.size());
+    for (int s = 0; s < n; ++s) phases.at(static_cast<std::size_t>(std::max(segments[s].phase, 0))).push_back(s);
+    for (std::size_t k = 1; k < phases.size(); ++k) {
+      for (const int before : phases[k - 1]) {
+        for (const int after : phases[k]) edges.push_back({before, after, segments[before].duration});
       }
     }
   }
@@ -694,10 +709,15 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         result.unordered.push_back(pair);
       }
     }
-    // standing at home before its first segment (item -1): the other's transition meets home
+    // standing at home before its first segment (item -1) — in a sequential history, standing
+    // at home at all: the other's transition meets home
+    const auto at_home = [&](int robot, int item) {
+      return item == -1 || (history.sequential && item < 0 &&
+                            view.at(robot, conflict->t, false).q == graph.world().world->robots[robot].home);
+    };
     for (const auto& [transition, item, robot] : {std::tuple{ta, conflict->item_b, rb}, std::tuple{tb, conflict->item_a, ra}}) {
       const std::pair<int, int> blocked{transition, robot};
-      if (transition >= 0 && item == -1 &&
+      if (transition >= 0 && at_home(robot, item) &&
           std::find(result.home_blocked.begin(), result.home_blocked.end(), blocked) == result.home_blocked.end()) {
         result.home_blocked.push_back(blocked);
       }

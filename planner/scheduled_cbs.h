@@ -13,6 +13,10 @@
 //  - scheduling constraints from the object sites: a motion through an object's start site
 //    starts after that object's pick is over; a motion through its goal site ends before its
 //    place begins;
+//  - a sequential history (TransitionHistory::sequential): every segment of a step's phase
+//    (ScheduleSegment::phase) starts after every segment of the phase before has ended, so
+//    the robots of one step move while the others stand at home (or hold the object the step
+//    passes on);
 //  - the constraints added by the high level.
 // The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
 // constraints cannot all hold).
@@ -54,6 +58,10 @@ struct ScheduleSegment {
   const Move* move = nullptr;                  ///< a move, or
   const TransitionMotion* motion = nullptr;    ///< a robot's part of a transition
   int step = -1;      ///< the history step it belongs to (-1: the move home)
+  /// The history step during which it runs in a sequential history: its step, except that a
+  /// robot's way home after a transition (parking, or the move home at the end) belongs to that
+  /// transition's step.
+  int phase = -1;
   Millis duration = 0;
   std::optional<HeldObject> held;  ///< moves: the object carried
   double finger = 0.025;           ///< moves: finger position [m]

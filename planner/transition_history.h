@@ -23,7 +23,7 @@ enum class ObjectPlace { kStart, kHeld, kGoal };
 struct ScheduledTransition {
   int transition = -1;  ///< MotionTransition id
   /// Per motion of the sample (same order): the moves bringing its robot to the start, in
-  /// order; two when the robot parks at home on the way (HyperpathSearch::Options).
+  /// order; two when the robot parks at home on the way (QueryMode::kParkAtHome).
   std::vector<std::vector<const Move*>> moves;
   Millis start = 0;  ///< when the transition starts (every robot in place)
 };
@@ -45,6 +45,9 @@ struct TransitionHistory {
   std::vector<ObjectState> objects;
   std::vector<Millis> site_busy;  ///< [site] the last scheduled motion through the site ends
   std::vector<ScheduledTransition> steps;
+  /// The steps run one after another, never two at a time (QueryMode::kSequential): a step's
+  /// moves start once the step before has ended, and conflict resolution keeps that order.
+  bool sequential = false;
   /// Final move of each robot back home (nullptr: already there); set when complete.
   std::vector<const Move*> home_moves;
   std::vector<Millis> home_starts;

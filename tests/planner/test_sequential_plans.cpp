@@ -1,0 +1,96 @@
+// The sequential greedy query (QueryMode::kSequential), the planner's last resort when conflict
+// resolution cannot order the robots of the other plans: its steps run one after another, the
+// robots of other steps wait at home, and conflict resolution keeps that order.
+#include <catch2/catch.hpp>
+
+#include <algorithm>
+#include <vector>
+
+#include "core/world_loader.h"
+#include "planner/hyperpath_search.h"
+#include "planner/scheduled_cbs.h"
+#include "tests/planner/dash_test_support.h"
+
+using namespace dashbed;
+using namespace dashbed::planner;
+using namespace dashbed::planner::testing;
+
+namespace {
+
+struct Graph {
+  core::LoadedWorld world;
+  TaskSpaceHypergraph task_space;
+  MotionHypergraph graph;
+  explicit Graph(const std::string& path)
+      : world(core::loadWorld(path)),
+        task_space(TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach)),
+        graph(world, task_space, 7) {}
+};
+
+/// The robots taking part in a history step.
+std::vector<int> robotsOf(const MotionHypergraph& graph, const ScheduledTransition& step) {
+  std::vector<int> robots;
+  for (const TransitionMotion& m : graph.transition(step.transition).sample.motions) robots.push_back(m.robot);
+  return robots;
+}
+
+}  // namespace
+
+TEST_CASE("a sequential task plan waits at home between steps and picks one object at a time when it can",
+          "[planner][dash]") {
+  Graph g(worldPath("default.yaml"));
+  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const TransitionHistory& history = *found.plan;
+  CHECK(history.sequential);
+  REQUIRE(history.steps.size() >= 2);
+  int held = 0;
+  for (std::size_t i = 0; i < history.steps.size(); ++i) {
+    const ScheduledTransition& step = history.steps[i];
+    const TransitionSample& sample = g.graph.transition(step.transition).sample;
+    held += sample.kind == TransitionKind::kPick ? 1 : sample.kind == TransitionKind::kPlace ? -1 : 0;
+    CHECK(held <= 1);  // the default world's cubes never need a second one on the move
+    if (i == 0) continue;
+    const ScheduledTransition& before = history.steps[i - 1];
+    // the optimistic schedule runs the steps one after another
+    CHECK(step.start >= before.start + g.graph.transition(before.transition).sample.duration);
+    // a robot that sat out the step before comes from home
+    const std::vector<int> previous = robotsOf(g.graph, before);
+    for (std::size_t m = 0; m < sample.motions.size(); ++m) {
+      const int robot = sample.motions[m].robot;
+      if (std::find(previous.begin(), previous.end(), robot) != previous.end()) continue;
+      const std::vector<const Move*>& moves = step.moves[m];
+      const core::ArmConfig& home = g.world.world->robots[static_cast<std::size_t>(robot)].home;
+      const bool from_home = moves.front()->path.front() == home || moves.front()->path.back() == home;
+      CHECK(from_home);
+    }
+  }
+}
+
+TEST_CASE("conflict resolution keeps the steps of a sequential task plan one after another", "[planner][dash]") {
+  Graph g(worldPath("default.yaml"));
+  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  ConflictResolutionBudget budget;
+  budget.max_nodes = 300;
+  const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, budget);
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const Schedule& schedule = *resolved.schedule;
+  CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
+  // every segment of a later phase starts once every segment of an earlier one has ended
+  for (std::size_t a = 0; a < schedule.segments.size(); ++a) {
+    for (std::size_t b = 0; b < schedule.segments.size(); ++b) {
+      if (schedule.segments[a].phase >= schedule.segments[b].phase) continue;
+      INFO("segment " << a << " (phase " << schedule.segments[a].phase << ") before segment " << b << " (phase "
+                      << schedule.segments[b].phase << ")");
+      CHECK(schedule.start[a] + schedule.segments[a].duration <= schedule.start[b]);
+    }
+  }
+  // and only then: a plain history lets the robots overlap
+  const SearchResult direct = HyperpathSearch(g.graph).greedy({});
+  REQUIRE(direct.status == SearchStatus::kFound);
+  CHECK_FALSE(direct.plan->sequential);
+  const ConflictResult overlapping = resolveConflicts(g.graph, *direct.plan, budget);
+  REQUIRE(overlapping.status == ConflictStatus::kResolved);
+  CHECK(overlapping.schedule->makespan < schedule.makespan);
+}
