@@ -239,14 +239,10 @@ bool HyperpathSearch::placeBlocked(const TransitionHistory& history, int robot, 
   const int place = place_hyperarc_[static_cast<std::size_t>(robot * graph_->taskSpace().numObjects() + object)];
   // no place hyperarc: the cost to go says where the object should go
   if (place < 0) return false;
+  const SiteSet filled = history.filledGoals(graph_->sites().numSites());
   const std::vector<int>& ids = graph_->transitionsOf(place, grasp);
   return std::all_of(ids.begin(), ids.end(), [&](int id) {
-    const SiteSet& touches = graph_->transition(id).sample.touches;
-    const bool filled = std::any_of(history.objects.begin(), history.objects.end(), [&](const auto& other) {
-      const int b = static_cast<int>(&other - history.objects.data());
-      return other.place == ObjectPlace::kGoal && touches.test(ObjectSites::goalSite(b));
-    });
-    return filled || knownUnusable(id);
+    return graph_->transition(id).sample.touches.intersects(filled) || knownUnusable(id);
   });
 }
 
@@ -382,10 +378,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   // the goal sites taken so far can never be placed.
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   const std::size_t n = history.robots.size();
-  SiteSet placed(graph_->sites().numSites());
-  for (std::size_t o = 0; o < history.objects.size(); ++o) {
-    if (history.objects[o].place == ObjectPlace::kGoal) placed.set(ObjectSites::goalSite(static_cast<int>(o)));
-  }
+  const SiteSet placed = history.filledGoals(graph_->sites().numSites());
   const auto available = [&](std::size_t h, int grasp) {
     const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
     return std::any_of(ids.begin(), ids.end(),

@@ -23,7 +23,8 @@
 // has no place or handoff sample for the grasp it holds the object in that keeps clear of the
 // goal sites filled so far, or holding robots wait on each other in a cycle (each needs to
 // hand its object to another holding robot); and when its last place took a goal site that
-// every place sample of another object touches (a front slot filled before its back one).
+// every place sample of another object touches (a front slot filled before its back one), or
+// that every pick sample of an object still at its start reaches over.
 //
 // Cost-to-go (the A*-like query's heuristic): for each object and task-space vertex, the
 // cheapest sum of sampled transition durations to its goal on the task-space hypergraph

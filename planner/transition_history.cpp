@@ -22,6 +22,14 @@ SiteSet TransitionHistory::occupied(int sites) const {
   return set;
 }
 
+SiteSet TransitionHistory::filledGoals(int sites) const {
+  SiteSet set(sites);
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    if (objects[o].place == ObjectPlace::kGoal) set.set(ObjectSites::goalSite(static_cast<int>(o)));
+  }
+  return set;
+}
+
 bool TransitionHistory::complete(const ObjectSites& sites) const {
   for (std::size_t o = 0; o < objects.size(); ++o) {
     if (sites.goal[o] && objects[o].place != ObjectPlace::kGoal) return false;

@@ -57,6 +57,8 @@ struct TransitionHistory {
 
   /// Sites occupied now: objects at their start or goal.
   SiteSet occupied(int sites) const;
+  /// The goal sites of the objects placed so far (they stay there).
+  SiteSet filledGoals(int sites) const;
   /// Every object with a goal is at it.
   bool complete(const ObjectSites& sites) const;
   /// Latest time any robot is busy (including the home moves once set).
