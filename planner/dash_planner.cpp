@@ -46,11 +46,7 @@ std::string describeTransition(const MotionHypergraph& graph, int id) {
 std::string homeCollisionReason(const MotionHypergraph& graph) {
   const auto& robots = graph.world().world->robots;
   CollisionChecker checker(graph.scene());
-  const auto at_home = [&](std::size_t r) {
-    Eigen::VectorXd q = Eigen::VectorXd::Constant(graph.scene().numPositions(static_cast<int>(r)), kFingersOpen);
-    for (int j = 0; j < 6; ++j) q[j] = robots[r].home[static_cast<std::size_t>(j)];
-    return q;
-  };
+  const auto at_home = [&](std::size_t r) { return graph.homeConfiguration(static_cast<int>(r)); };
   const auto where = [&](std::size_t r) {
     const core::SourceLocation& at = robots[r].where;
     return at.file.empty() ? std::string() : " (" + at.file + ":" + std::to_string(at.line) + ")";

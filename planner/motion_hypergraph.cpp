@@ -202,18 +202,15 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
   Roadmap::MotionFilter clear;
   if (around_homes) {
     if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
-    const auto& robots = world_->world->robots;
-    clear = [&, robot](const core::ArmConfig& a, const core::ArmConfig& b) {
+    std::vector<std::pair<int, Eigen::VectorXd>> homes;  // the other robots at home
+    for (int other = 0; other < scene_->numRobots(); ++other) {
+      if (other != robot) homes.emplace_back(other, homeConfiguration(other));
+    }
+    clear = [this, &map, robot, homes = std::move(homes)](const core::ArmConfig& a, const core::ArmConfig& b) {
       const Eigen::VectorXd qa = map.fullConfiguration(a), qb = map.fullConfiguration(b);
-      for (std::size_t other = 0; other < robots.size(); ++other) {
-        if (static_cast<int>(other) == robot) continue;
-        Eigen::VectorXd home = Eigen::VectorXd::Constant(scene_->numPositions(static_cast<int>(other)), kFingersOpen);
-        for (int j = 0; j < 6; ++j) home[j] = robots[other].home[static_cast<std::size_t>(j)];
-        if (!checker_->motionsFree(robot, qa, qb, map.held(), static_cast<int>(other), home, home, std::nullopt)) {
-          return false;
-        }
-      }
-      return true;
+      return std::all_of(homes.begin(), homes.end(), [&](const auto& home) {
+        return checker_->motionsFree(robot, qa, qb, map.held(), home.first, home.second, home.second, std::nullopt);
+      });
     };
   }
   const int a = map.addConfiguration(from), b = map.addConfiguration(to);
@@ -413,6 +410,12 @@ bool MotionHypergraph::neverPlaceable(int object) {
     }
   }
   return true;
+}
+
+Eigen::VectorXd MotionHypergraph::homeConfiguration(int robot) const {
+  Eigen::VectorXd q = Eigen::VectorXd::Constant(scene_->numPositions(robot), kFingersOpen);
+  for (int j = 0; j < 6; ++j) q[j] = world_->world->robots.at(static_cast<std::size_t>(robot)).home[static_cast<std::size_t>(j)];
+  return q;
 }
 
 bool MotionHypergraph::hasPlaceSample(int object) const {

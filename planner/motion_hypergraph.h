@@ -111,6 +111,9 @@ class MotionHypergraph {
   const RepresentationSettings& settings() const { return settings_; }
   const TimingLimits& timing() const { return timing_; }
 
+  /// `robot` at its home configuration with its gripper open, as the collision checker takes it.
+  Eigen::VectorXd homeConfiguration(int robot) const;
+
   /// Virtual source / target as motion vertex sets (the start and goal decomposition).
   const std::vector<int>& sourceVertices() const { return source_; }
   const std::vector<int>& targetVertices() const { return target_; }
