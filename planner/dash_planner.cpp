@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "planner/home_check.h"
 #include "planner/hyperpath_search.h"
 #include "planner/plan_writer.h"
 #include "planner/scheduled_cbs.h"
@@ -38,33 +39,6 @@ std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph
 std::string describeTransition(const MotionHypergraph& graph, int id) {
   return describeHyperarc(*graph.world().world, graph.taskSpace(), graph.transition(id).sample.hyperarc) +
          " (transition " + std::to_string(id) + ")";
-}
-
-/// Why the robots cannot even stand at home, or "": a robot at its home configuration (gripper
-/// open) inside the static scene or another robot at home. A world file that puts a base inside
-/// a table or two bases on top of each other gets this instead of a misleading failure later.
-std::string homeCollisionReason(const MotionHypergraph& graph) {
-  const auto& robots = graph.world().world->robots;
-  CollisionChecker checker(graph.scene());
-  const auto at_home = [&](std::size_t r) { return graph.homeConfiguration(static_cast<int>(r)); };
-  const auto where = [&](std::size_t r) {
-    const core::SourceLocation& at = robots[r].where;
-    return at.file.empty() ? std::string() : " (" + at.file + ":" + std::to_string(at.line) + ")";
-  };
-  for (std::size_t r = 0; r < robots.size(); ++r) {
-    if (!checker.robotFree(static_cast<int>(r), at_home(r), {})) {
-      return "robot " + robots[r].name + where(r) +
-             " collides with the static scene at its home configuration: check robots[" + std::to_string(r) +
-             "].base and home";
-    }
-    for (std::size_t s = 0; s < r; ++s) {
-      if (!checker.robotsFree(static_cast<int>(r), at_home(r), std::nullopt, static_cast<int>(s), at_home(s), std::nullopt)) {
-        return "robots " + robots[s].name + where(s) + " and " + robots[r].name + where(r) +
-               " collide with each other at their home configurations: check their bases";
-      }
-    }
-  }
-  return "";
 }
 
 /// Why an object can never reach its goal in the task-space hypergraph, or "".
@@ -157,11 +131,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     stats.roadmap_nodes = graph->numRoadmapNodes();
   };
 
-  if (std::string reason = homeCollisionReason(*graph); !reason.empty()) {
-    result.reason = std::move(reason);
-    record();
-    return result;
-  }
+  requireFreeHomes(*world.world, graph->scene());
   // objects that can never reach their goals: infeasible, whatever the sampling
   {
     const HyperpathSearch probe(*graph);

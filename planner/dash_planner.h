@@ -16,7 +16,9 @@
 //                    no better than the best resolved plan. With a deadline it is anytime: the
 //                    best plan so far is returned when time is up.
 //
-// One entry point, solve(); infeasible problems and timeouts are statuses, not exceptions.
+// One entry point, solve(); infeasible problems and timeouts are statuses, not exceptions. The
+// one world error only the collision model can see, a robot colliding at home, throws
+// core::WorldError (home_check.h), like the errors core::loadWorld throws.
 // The plan is deterministic for a world, settings and seed; wall-clock times are reported in
 // PlannerStats only, never in the plan.
 

@@ -204,7 +204,7 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
     if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
     std::vector<std::pair<int, Eigen::VectorXd>> homes;  // the other robots at home
     for (int other = 0; other < scene_->numRobots(); ++other) {
-      if (other != robot) homes.emplace_back(other, homeConfiguration(other));
+      if (other != robot) homes.emplace_back(other, homeConfiguration(*world_->world, *scene_, other));
     }
     clear = [this, &map, robot, homes = std::move(homes)](const core::ArmConfig& a, const core::ArmConfig& b) {
       const Eigen::VectorXd qa = map.fullConfiguration(a), qb = map.fullConfiguration(b);
@@ -410,12 +410,6 @@ bool MotionHypergraph::neverPlaceable(int object) {
     }
   }
   return true;
-}
-
-Eigen::VectorXd MotionHypergraph::homeConfiguration(int robot) const {
-  Eigen::VectorXd q = Eigen::VectorXd::Constant(scene_->numPositions(robot), kFingersOpen);
-  for (int j = 0; j < 6; ++j) q[j] = world_->world->robots.at(static_cast<std::size_t>(robot)).home[static_cast<std::size_t>(j)];
-  return q;
 }
 
 bool MotionHypergraph::hasPlaceSample(int object) const {

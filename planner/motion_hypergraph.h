@@ -40,6 +40,7 @@
 
 #include "core/world_loader.h"
 #include "planner/collision_checker.h"
+#include "planner/home_check.h"
 #include "planner/object_sites.h"
 #include "planner/roadmap.h"
 #include "planner/task_space_hypergraph.h"
@@ -47,9 +48,6 @@
 #include "planner/transition_sampler.h"
 
 namespace dashbed::planner {
-
-/// Finger position of a robot alone: its gripper open [m] (each finger; Hand-E stroke, core/grasps.h).
-inline constexpr double kFingersOpen = 0.025;
 
 struct RepresentationSettings {
   int initial_roadmap_samples = 10;    ///< samples of a roadmap when it is created (paper: 10)
@@ -110,9 +108,6 @@ class MotionHypergraph {
   const ObjectSites& sites() const { return sites_; }
   const RepresentationSettings& settings() const { return settings_; }
   const TimingLimits& timing() const { return timing_; }
-
-  /// `robot` at its home configuration with its gripper open, as the collision checker takes it.
-  Eigen::VectorXd homeConfiguration(int robot) const;
 
   /// Virtual source / target as motion vertex sets (the start and goal decomposition).
   const std::vector<int>& sourceVertices() const { return source_; }

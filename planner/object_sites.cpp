@@ -88,8 +88,8 @@ ObjectSites objectSites(const core::LoadedWorld& loaded) {
     std::size_t& k = used[region->name];
     if (k >= in_reach) {
       throw std::runtime_error("region " + region->name + " has room for " + std::to_string(in_reach) +
-                               " objects side by side within reach of a robot (" + std::to_string(slots.size()) +
-                               " in all); more are sent there");
+                               (in_reach == 1 ? " object" : " objects") + " side by side within reach of a robot (" +
+                               std::to_string(slots.size()) + " in all); more are sent there");
     }
     sites.goal.push_back(slots[k++]);
   }

@@ -125,10 +125,11 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
 /// Grasps a receiver may take of an object held in `giver`: those from above (graspsOf) of the
 /// object relabelled with each of its six faces up, i.e. every approach along a face normal,
 /// with the receiver coming in across both the giver's approach and closing axes (and so
-/// closing along the giver's approach axis). This is the handoff that holds in simulation (the
-/// scripted-plan tool's: giver level, receiver from above): a receiver coming head-on lost the
-/// cube when the giver withdrew, and one coming along the giver's closing axis had its housing
-/// next to a giver finger, which touched it when the giver opened.
+/// closing along the giver's approach axis), its pads fitting between the giver's fingers with
+/// kHandoffClearance to spare (not so on a cube under 40 mm). This is the handoff that holds in
+/// simulation (the scripted-plan tool's: giver level, receiver from above): a receiver coming
+/// head-on lost the cube when the giver withdrew, and one coming along the giver's closing axis
+/// had its housing next to a giver finger, which touched it when the giver opened.
 /// On a long object (the shelf items) the receiver may also come head-on, against the giver's
 /// approach, closing on the giver's face pair, where the two pairs of fingertips sit apart
 /// along the object's length (the pads' width axis of both): the giver at one end, the receiver
@@ -147,8 +148,12 @@ std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver) {
         // how far the object reaches back from the TCP, towards the housing
         const double behind = 0.5 * size.dot(approach.cwiseAbs()) - grasp.X_OT.translation().dot(approach);
         if (behind > kHousingBehindTcp - kHandoffClearance) continue;
-        const bool across =
-            std::abs(approach.dot(giver_closing)) <= 0.5 && std::abs(approach.dot(giver_approach)) <= 0.5;
+        // across: the receiver's pads, kFingertipWidth wide along the giver's closing axis, fit
+        // between the giver's fingers (a 30 mm cube leaves 0.4 mm beside a 29.2 mm pad)
+        const double pad_offset = std::abs((grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_closing));
+        const bool across = std::abs(approach.dot(giver_closing)) <= 0.5 &&
+                            std::abs(approach.dot(giver_approach)) <= 0.5 &&
+                            pad_offset + kFingertipWidth / 2 + kHandoffClearance <= giver.finger;
         const bool head_on = approach.dot(giver_approach) < -0.5 &&
                              std::abs(grasp.X_OT.linear().col(1).dot(giver_width)) > 0.5 &&
                              std::abs((grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_width)) >=

@@ -1,8 +1,8 @@
 // dashbed run [WORLD]: the main job on a world (the built-in default when none is given).
 //
-// Loads and validates the world, reports what each robot can reach and which robots can hand
-// objects to each other, plans with DaSH (tools/run_planner.h), executes the plan in simulation
-// and checks it.
+// Loads and validates the world (including that every robot is free at home), reports what each
+// robot can reach and which robots can hand objects to each other, plans with DaSH
+// (tools/run_planner.h), executes the plan in simulation and checks it.
 
 #include <cmath>
 #include <fstream>
@@ -16,6 +16,7 @@
 #include "core/asset_paths.h"
 #include "core/reach.h"
 #include "core/world_loader.h"
+#include "planner/home_check.h"
 #include "sim/run_plan.h"
 #include "tools/cli_support.h"
 #include "tools/run_planner.h"
@@ -115,7 +116,8 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
   std::cout << "\nhandoffs possible between:";
   if (handoff_pairs.empty()) std::cout << " (none)";
   for (const auto& [a, b] : handoff_pairs) std::cout << " " << world.robots[a].name << "<->" << world.robots[b].name;
-  std::cout << "\n\nworld is valid: every object start and goal is within some robot's reach.\n";
+  std::cout << "\n\nworld is valid: every object start and goal is within some robot's reach, every robot is free "
+               "at home.\n";
 }
 
 void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options) {
@@ -144,6 +146,7 @@ void runJob(const RunOptions& options) {
   const std::filesystem::path file =
       options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(file);
+  planner::requireFreeHomes(*loaded.world, planner::CollisionScene(*loaded.world, *loaded.robots));
   if (!options.outputs.quiet || options.json || options.validate_only) printSummary(loaded, file, options);
   if (!options.validate_only && !options.json) planAndSimulate(loaded, options);
 }

@@ -85,14 +85,25 @@ TEST_CASE("a cube no robot can reach makes the problem infeasible and is named",
   CHECK_FALSE(result.plan);
 }
 
-TEST_CASE("a robot base inside the table makes the problem infeasible and names the robot", "[planner][dash]") {
+TEST_CASE("a robot colliding at home is a world error naming the file, line and robot", "[planner][dash]") {
   core::World world = core::loadWorldFile(worldPath("default.yaml"));
-  world.robots[1].X_WBase.translation().z() -= 0.25;  // its base and shoulder in the table top
+  std::string field;
+  std::string what;
+  SECTION("with the table") {
+    world.robots[1].home[1] = 0.6;  // shoulder lifted below the horizontal: the upper arm in the table top
+    field = "robots[1].home: robot '" + world.robots[1].name + "'";
+    what = "collides with a fixture, the floor";
+  }
+  SECTION("with another robot") {
+    // facing r0 0.7 m away (its pedestal clear of r0's): the forearms, reaching forward at home, cross
+    world.robots[1].X_WBase.translation() = world.robots[0].X_WBase.translation() + Eigen::Vector3d(0.7, 0.0, 0.0);
+    field = "robots[1].home: robot '" + world.robots[1].name + "'";
+    what = "collides with robot '" + world.robots[0].name + "'";
+  }
   const core::LoadedWorld loaded = unchecked(std::move(world));
-  const PlanResult result = solve(loaded, testSettings());
-  CHECK(result.status == PlannerStatus::kInfeasible);
-  CHECK_THAT(result.reason, Contains("robot " + loaded.world->robots[1].name) && Contains("static scene"));
-  CHECK_FALSE(result.plan);
+  const auto location = "default.yaml:" + std::to_string(loaded.world->robots[1].where.line) + ":";
+  CHECK_THROWS_AS(solve(loaded, testSettings()), core::WorldError);
+  CHECK_THROWS_WITH(solve(loaded, testSettings()), Contains(location) && Contains(field) && Contains(what));
 }
 
 TEST_CASE("an object no grasp can ever place makes the problem infeasible and is named", "[planner][dash]") {
@@ -145,6 +156,32 @@ TEST_CASE("objects the default and shelving worlds place are not proven never pl
       CHECK_FALSE(graph.neverPlaceable(o));
     }
   }
+}
+
+TEST_CASE("a 30 mm cube that must be handed over makes the problem infeasible", "[planner][dash]") {
+  // the receiver's 29.2 mm wide pads do not fit between the giver's fingers on a 30 mm cube
+  core::World world = core::loadWorldFile(testWorldPath("handoff_too_wide.yaml"));
+  world.objects[0].size = Eigen::Vector3d::Constant(0.030);
+  world.objects[0].X_WO.translation().z() = 0.75 + 0.015;  // on the table
+  const core::LoadedWorld loaded = unchecked(std::move(world));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*loaded.world, *loaded.robots, loaded.reach);
+  MotionHypergraph graph(loaded, task_space, 7);
+  const TransitionSampler sampler(loaded, task_space, graph.scene(), graph.sites(), {});
+  std::size_t picks = 0;
+  for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
+    if (task_space.hyperarcs()[h].kind != TransitionKind::kPick) continue;
+    for (const int t : graph.transitionsOf(static_cast<int>(h), -1)) {
+      ++picks;
+      CHECK(sampler.handoffGrasps(0, *graph.transition(t).sample.grasp_after).empty());
+    }
+  }
+  REQUIRE(picks > 0);
+  CHECK(graph.neverPlaceable(0));
+
+  const PlanResult result = solve(loaded, testSettings());
+  CHECK(result.status == PlannerStatus::kInfeasible);
+  CHECK_THAT(result.reason, Contains("cube_0 can never be placed in bin_red"));
+  CHECK(result.stats.rounds == 1);
 }
 
 TEST_CASE("a timeout without any task plan names the transitions that were never sampled", "[planner][dash]") {

@@ -1,0 +1,26 @@
+#pragma once
+// Robots at home: where every plan starts and ends. A world in which a robot standing at its
+// home configuration collides with a fixture, the floor or another robot at home can never be
+// planned, whatever the sampling: its base or home pose is written wrong, so it is a world-file
+// error (core::WorldError, exit 3 on the command line), not a planning outcome.
+
+#include <Eigen/Core>
+
+#include "core/world.h"
+#include "planner/collision_checker.h"
+
+namespace dashbed::planner {
+
+/// Finger position of a robot alone: its gripper open [m] (each finger; Hand-E stroke, core/grasps.h).
+inline constexpr double kFingersOpen = 0.025;
+
+/// `robot` at its home configuration (World::robots[robot].home) with its gripper open, as the
+/// collision checker takes it.
+Eigen::VectorXd homeConfiguration(const core::World& world, const CollisionScene& scene, int robot);
+
+/// Throws core::WorldError naming the world file, line and field (robots[i].home) when a robot
+/// at home collides with the static scene or with another robot at home. `scene` must have
+/// been built for `world`.
+void requireFreeHomes(const core::World& world, const CollisionScene& scene);
+
+}  // namespace dashbed::planner
