@@ -100,6 +100,9 @@ std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int r
 
 PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget) {
   if (settings.max_rounds < 1) throw std::invalid_argument("planner settings: max_rounds: must be >= 1");
+  if (settings.sequential_fallback_rounds < 0) {
+    throw std::invalid_argument("planner settings: sequential_fallback_rounds: must be >= 0");
+  }
   PlanResult result;
   PlannerStats& stats = result.stats;
   const Clock::time_point started = Clock::now();
@@ -162,6 +165,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   std::optional<Schedule> best_schedule;
   Millis best = std::numeric_limits<Millis>::max();
   std::string last_failure = "no task plan found";
+  bool sequential_query = false;  // the plans being resolved move one object at a time
+  bool best_is_sequential = false;
+  int fallback_round = 0;  // the round that found the first sequential plan
 
   // conflict resolution of a task plan; keeps it when better than the best so far. Returns
   // true when its failure gave a new scheduling constraint (at most the round's allowance).
@@ -206,6 +212,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       best = resolved.schedule->makespan;
       best_history = history;
       best_schedule = resolved.schedule;
+      best_is_sequential = sequential_query;
       stats.conflict_constraints = resolved.constraints;
       stats.optimistic_makespan = toSeconds(history.makespan());
     }
@@ -252,7 +259,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
       return greedy;
     };
-    for (bool again = true; again && !best_schedule && !time_up();) {
+    const auto direct_plan = [&] { return best_schedule && !best_is_sequential; };
+    for (bool again = true; again && !direct_plan() && !time_up();) {
       again = false;
       for (const QueryMode mode : {QueryMode::kDirect, QueryMode::kParkAtHome}) {
         const SearchResult greedy = greedy_query(mode);
@@ -267,16 +275,20 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           again = true;
           break;
         }
-        if (again || best_schedule || time_up()) break;
+        if (again || direct_plan() || time_up()) break;
       }
     }
     // the last resort of the round: the sequential plan, its own scheduling constraints (most
-    // often a robot waiting at home in the way of another's transition) starting it again
+    // often a robot waiting at home in the way of another's transition) starting it again; it
+    // is kept as a fallback while the next rounds look for a direct plan
     feedbacks = 0;
+    sequential_query = true;
     for (bool again = !best_schedule; again && !time_up();) {
       const SearchResult greedy = greedy_query(QueryMode::kSequential);
       again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
     }
+    sequential_query = false;
+    if (best_schedule && fallback_round == 0) fallback_round = round;
     // Next-Best Search: task plans in order of optimistic makespan until no better is possible
     for (bool again = settings.method == Method::kOptimal; again && !time_up();) {
       again = false;
@@ -287,7 +299,11 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         again = resolve(*next.plan);
       }
     }
-    if (best_schedule) break;
+    if (direct_plan() || (best_schedule && round >= fallback_round + settings.sequential_fallback_rounds)) break;
+    if (best_schedule) {
+      say("keeping the sequential plan (makespan " + secondsText(best) + ") while looking for a direct one");
+      continue;
+    }
     // an object without any place sample after a round may be one no grasp can ever place; so
     // may any object while no task plan has been found at all (its place samples may be for
     // grasps the placing robot can never come to hold)

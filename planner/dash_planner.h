@@ -53,6 +53,10 @@ struct PlannerSettings {
   /// Scheduling constraints fed back from failed conflict resolutions per round, each followed
   /// by a new query on the same representation.
   int scheduling_constraints_per_round = 6;
+  /// A plan moving one object at a time (the last resort of a round whose other queries all
+  /// failed) is kept as a fallback: the direct queries go on for this many more rounds of
+  /// expansion, and a plan they find replaces it when shorter.
+  int sequential_fallback_rounds = 2;
   RepresentationSettings representation;
 };
 

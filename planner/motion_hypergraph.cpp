@@ -194,10 +194,10 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
   std::vector<bool> occupied_bits(static_cast<std::size_t>(sites_.numSites()));
   for (int s = 0; s < sites_.numSites(); ++s) occupied_bits[s] = occupied.test(s);
   const auto key = std::make_tuple(robot, object, grasp, from, to, occupied_bits, around_homes);
-  if (const auto it = moves_.find(key); it != moves_.end()) return it->second ? &*it->second : nullptr;
+  if (const auto it = moves_.find(key); it != moves_.end()) return it->second.get();
 
   const ScopedTimer timer(construction_seconds_);
-  std::optional<Move> result;
+  std::unique_ptr<Move> result;  // none: no path
   Roadmap& map = roadmap(robot, object, grasp);
   Roadmap::MotionFilter clear;
   if (around_homes) {
@@ -227,9 +227,8 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
     grown += settings_.move_growth_samples;
     path = map.query(a, b, occupied, clear);
   }
-  if (path) result = makeMove(robot, object, grasp, std::move(*path), occupied);
-  const auto it = moves_.emplace(key, std::move(result)).first;
-  return it->second ? &*it->second : nullptr;
+  if (path) result = std::make_unique<Move>(makeMove(robot, object, grasp, std::move(*path), occupied));
+  return moves_.emplace(key, std::move(result)).first->second.get();
 }
 
 Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<core::ArmConfig> path,
@@ -350,10 +349,11 @@ int MotionHypergraph::expand() {
   for (const auto& [hyperarc, grasp] : handoff_keys) sampleHandoffs(hyperarc, grasp, round_);
   for (auto& [key, map] : roadmaps_) map.grow(settings_.roadmap_samples_per_round);
   grown_this_round_.clear();
-  // every move is planned again on the grown roadmaps (found ones kept alive for pointers
-  // still held): a new round brings new paths, not only the ones that failed
+  // every move is planned again on the grown roadmaps (found ones kept alive, where they are,
+  // for pointers still held, e.g. by a plan kept from an earlier round): a new round brings new
+  // paths, not only the ones that failed
   for (auto& [key, found] : moves_) {
-    if (found) retired_moves_.push_back(std::move(*found));
+    if (found) retired_moves_.push_back(std::move(found));
   }
   moves_.clear();
   return round_;
@@ -361,7 +361,7 @@ int MotionHypergraph::expand() {
 
 std::size_t MotionHypergraph::numMoves() const {
   return retired_moves_.size() +
-         static_cast<std::size_t>(std::count_if(moves_.begin(), moves_.end(), [](const auto& e) { return e.second.has_value(); }));
+         static_cast<std::size_t>(std::count_if(moves_.begin(), moves_.end(), [](const auto& e) { return e.second != nullptr; }));
 }
 
 std::size_t MotionHypergraph::numRoadmapNodes() const {

@@ -230,9 +230,9 @@ class MotionHypergraph {
   std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
-  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>, bool>, std::optional<Move>> moves_;  // cache of move()
+  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>, bool>, std::unique_ptr<Move>> moves_;  // cache of move() (null: no path)
   std::deque<Move> detours_;  // made by detour()
-  std::deque<Move> retired_moves_;  // moves of earlier rounds (pointers to them stay valid)
+  std::vector<std::unique_ptr<Move>> retired_moves_;  // moves of earlier rounds (pointers to them stay valid)
   std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)
   std::map<std::pair<int, int>, int> hyperarc_pair_constraints_;  // (task-space hyperarcs) -> pairs
   std::set<std::pair<int, int>> hyperarc_constraints_;            // those with two or more

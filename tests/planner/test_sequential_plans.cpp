@@ -7,7 +7,9 @@
 #include <vector>
 
 #include "core/world_loader.h"
+#include "core/plan.h"
 #include "planner/hyperpath_search.h"
+#include "planner/plan_writer.h"
 #include "planner/scheduled_cbs.h"
 #include "tests/planner/dash_test_support.h"
 
@@ -93,4 +95,22 @@ TEST_CASE("conflict resolution keeps the steps of a sequential task plan one aft
   const ConflictResult overlapping = resolveConflicts(g.graph, *direct.plan, budget);
   REQUIRE(overlapping.status == ConflictStatus::kResolved);
   CHECK(overlapping.schedule->makespan < schedule.makespan);
+}
+
+TEST_CASE("a plan kept as a fallback is written out the same after the representation grows", "[planner][dash]") {
+  // the planner keeps a sequential plan while later rounds look for a direct one: its moves
+  // must outlive the rounds that plan every move again
+  Graph g(worldPath("default.yaml"));
+  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  ConflictResolutionBudget budget;
+  budget.max_nodes = 300;
+  const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, budget);
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const std::string before = core::writePlanJson(writePlan(g.graph, *found.plan, *resolved.schedule));
+  const std::size_t moves = g.graph.numMoves();
+  g.graph.expand();
+  g.graph.expand();
+  CHECK(g.graph.numMoves() == moves);  // the old moves retired, none planned yet
+  CHECK(core::writePlanJson(writePlan(g.graph, *found.plan, *resolved.schedule)) == before);
 }
