@@ -289,8 +289,12 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     }
     sequential_query = false;
     if (best_schedule && fallback_round == 0) fallback_round = round;
-    // Next-Best Search: task plans in order of optimistic makespan until no better is possible
-    for (bool again = settings.method == Method::kOptimal; again && !time_up();) {
+    // Next-Best Search: task plans in order of optimistic makespan until no better is possible;
+    // not while a sequential fallback waits for the direct queries of the next rounds (those
+    // run as for Greedy, so that MM-DaSH starts from Greedy's plan)
+    const bool fallback_done = round >= fallback_round + settings.sequential_fallback_rounds;
+    const bool waiting = best_schedule && !direct_plan() && !fallback_done;
+    for (bool again = settings.method == Method::kOptimal && !waiting; again && !time_up();) {
       again = false;
       HyperpathSearch search(*graph);
       for (int k = 0; k < settings.next_best_plans && !again && !time_up(); ++k) {
@@ -299,7 +303,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         again = resolve(*next.plan);
       }
     }
-    if (direct_plan() || (best_schedule && round >= fallback_round + settings.sequential_fallback_rounds)) break;
+    if (direct_plan() || (best_schedule && fallback_done)) break;
     if (best_schedule) {
       say("keeping the sequential plan (makespan " + secondsText(best) + ") while looking for a direct one");
       continue;
