@@ -4,6 +4,7 @@
 #include <catch2/catch.hpp>
 
 #include <algorithm>
+#include <utility>
 #include <vector>
 
 #include "core/world_loader.h"
@@ -34,6 +35,21 @@ std::vector<int> robotsOf(const MotionHypergraph& graph, const ScheduledTransiti
   std::vector<int> robots;
   for (const TransitionMotion& m : graph.transition(step.transition).sample.motions) robots.push_back(m.robot);
   return robots;
+}
+
+ConflictResolutionBudget conflictBudget() {
+  ConflictResolutionBudget budget;
+  budget.max_nodes = 300;
+  return budget;
+}
+
+/// The graph's sequential greedy task plan and its schedule from conflict resolution.
+std::pair<TransitionHistory, Schedule> resolvedSequential(Graph& g) {
+  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, conflictBudget());
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  return {*found.plan, *resolved.schedule};
 }
 
 }  // namespace
@@ -71,13 +87,7 @@ TEST_CASE("a sequential task plan waits at home between steps and picks one obje
 
 TEST_CASE("conflict resolution keeps the steps of a sequential task plan one after another", "[planner][dash]") {
   Graph g(worldPath("default.yaml"));
-  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
-  REQUIRE(found.status == SearchStatus::kFound);
-  ConflictResolutionBudget budget;
-  budget.max_nodes = 300;
-  const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, budget);
-  REQUIRE(resolved.status == ConflictStatus::kResolved);
-  const Schedule& schedule = *resolved.schedule;
+  const auto [history, schedule] = resolvedSequential(g);
   CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
   // every segment of a later phase starts once every segment of an earlier one has ended
   for (std::size_t a = 0; a < schedule.segments.size(); ++a) {
@@ -92,7 +102,7 @@ TEST_CASE("conflict resolution keeps the steps of a sequential task plan one aft
   const SearchResult direct = HyperpathSearch(g.graph).greedy({});
   REQUIRE(direct.status == SearchStatus::kFound);
   CHECK_FALSE(direct.plan->sequential);
-  const ConflictResult overlapping = resolveConflicts(g.graph, *direct.plan, budget);
+  const ConflictResult overlapping = resolveConflicts(g.graph, *direct.plan, conflictBudget());
   REQUIRE(overlapping.status == ConflictStatus::kResolved);
   CHECK(overlapping.schedule->makespan < schedule.makespan);
 }
@@ -101,16 +111,11 @@ TEST_CASE("a plan kept as a fallback is written out the same after the represent
   // the planner keeps a sequential plan while later rounds look for a direct one: its moves
   // must outlive the rounds that plan every move again
   Graph g(worldPath("default.yaml"));
-  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
-  REQUIRE(found.status == SearchStatus::kFound);
-  ConflictResolutionBudget budget;
-  budget.max_nodes = 300;
-  const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, budget);
-  REQUIRE(resolved.status == ConflictStatus::kResolved);
-  const std::string before = core::writePlanJson(writePlan(g.graph, *found.plan, *resolved.schedule));
+  const auto [history, schedule] = resolvedSequential(g);
+  const std::string before = core::writePlanJson(writePlan(g.graph, history, schedule));
   const std::size_t moves = g.graph.numMoves();
   g.graph.expand();
   g.graph.expand();
   CHECK(g.graph.numMoves() == moves);  // the old moves retired, none planned yet
-  CHECK(core::writePlanJson(writePlan(g.graph, *found.plan, *resolved.schedule)) == before);
+  CHECK(core::writePlanJson(writePlan(g.graph, history, schedule)) == before);
 }
