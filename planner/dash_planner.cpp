@@ -165,8 +165,6 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   std::optional<Schedule> best_schedule;
   Millis best = std::numeric_limits<Millis>::max();
   std::string last_failure = "no task plan found";
-  bool sequential_query = false;  // the plans being resolved move one object at a time
-  bool best_is_sequential = false;
   int fallback_round = 0;  // the round that found the first sequential plan
 
   // conflict resolution of a task plan; keeps it when better than the best so far. Returns
@@ -212,7 +210,6 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       best = resolved.schedule->makespan;
       best_history = history;
       best_schedule = resolved.schedule;
-      best_is_sequential = sequential_query;
       stats.conflict_constraints = resolved.constraints;
       stats.optimistic_makespan = toSeconds(history.makespan());
     }
@@ -259,7 +256,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
       return greedy;
     };
-    const auto direct_plan = [&] { return best_schedule && !best_is_sequential; };
+    const auto direct_plan = [&] { return best_history && !best_history->sequential; };
     for (bool again = true; again && !direct_plan() && !time_up();) {
       again = false;
       for (const QueryMode mode : {QueryMode::kDirect, QueryMode::kParkAtHome}) {
@@ -282,12 +279,10 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // often a robot waiting at home in the way of another's transition) starting it again; it
     // is kept as a fallback while the next rounds look for a direct plan
     feedbacks = 0;
-    sequential_query = true;
     for (bool again = !best_schedule; again && !time_up();) {
       const SearchResult greedy = greedy_query(QueryMode::kSequential);
       again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
     }
-    sequential_query = false;
     if (best_schedule && fallback_round == 0) fallback_round = round;
     // Next-Best Search: task plans in order of optimistic makespan until no better is possible;
     // not while a sequential fallback waits for the direct queries of the next rounds (those
