@@ -13,13 +13,13 @@ JointPdController::JointPdController(const core::RobotModel& model, const core::
   for (int i = 0; i < 6; ++i) effort_limit_[i] = model.joints()[model.movableJoints()[i]].max_effort;
 }
 
-ArmTorques JointPdController::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                      const JointReference& ref) const {
+ArmTorques JointPdController::compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const JointReference& ref,
+                                      const core::Payload* payload) const {
   Eigen::VectorXd qdd = Eigen::VectorXd::Zero(q.size());
   for (int i = 0; i < 6; ++i) {
     qdd[i] = ref.qdd[i] + settings_.kp[i] * (ref.q[i] - q[i]) + settings_.kd[i] * (ref.qd[i] - qd[i]);
   }
-  const Eigen::VectorXd tau = core::inverseDynamics(model_, q, qd, qdd, gravity_root_);
+  const Eigen::VectorXd tau = core::inverseDynamics(model_, q, qd, qdd, gravity_root_, payload);
   ArmTorques out;
   for (int i = 0; i < 6; ++i) {
     const double ratio = std::abs(tau[i]) / effort_limit_[i];

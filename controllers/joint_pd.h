@@ -7,6 +7,7 @@
 #include <Eigen/Core>
 
 #include "controllers/trajectory_interpolator.h"
+#include "core/dynamics.h"
 #include "core/robot_model.h"
 #include "core/world.h"
 
@@ -27,8 +28,10 @@ class JointPdController {
 
   /// tau = M(q) (qdd_ref + kp (q_ref - q) + kd (qd_ref - qd)) + c(q, qd) + g(q) for the six
   /// arm joints; q and qd hold all the model's joints (the fingers' accelerations are taken
-  /// as zero). Each torque is clamped to +-max_effort of its joint.
-  ArmTorques compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const JointReference& ref) const;
+  /// as zero). With a payload (the object in the gripper, as a UR controller is told with
+  /// set_payload) M, c and g include it. Each torque is clamped to +-max_effort of its joint.
+  ArmTorques compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const JointReference& ref,
+                     const core::Payload* payload = nullptr) const;
 
  private:
   const core::RobotModel& model_;

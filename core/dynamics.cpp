@@ -1,5 +1,7 @@
 #include "core/dynamics.h"
 
+#include <stdexcept>
+#include <string>
 #include <vector>
 
 #include "core/kinematics.h"
@@ -48,24 +50,33 @@ std::vector<LinkMotion> linkMotions(const RobotModel& model, const std::vector<P
 }  // namespace
 
 Eigen::VectorXd inverseDynamics(const RobotModel& model, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                const Eigen::VectorXd& qdd, const Eigen::Vector3d& gravity_R) {
+                                const Eigen::VectorXd& qdd, const Eigen::Vector3d& gravity_R, const Payload* payload) {
   const auto& links = model.links();
+  if (payload != nullptr && (payload->link < 0 || payload->link >= static_cast<int>(links.size()))) {
+    throw std::invalid_argument("inverseDynamics: payload link " + std::to_string(payload->link) + " out of range");
+  }
   const std::vector<Pose> X_RL = linkPoses(model, q);
   const std::vector<LinkMotion> m = linkMotions(model, X_RL, qd, qdd, -gravity_R);
   // per link: net force F and net moment N about the link origin needed for its motion,
   // accumulated from the leaves to the root (links are in topological order)
   std::vector<Eigen::Vector3d> F(links.size(), Eigen::Vector3d::Zero());
   std::vector<Eigen::Vector3d> N(links.size(), Eigen::Vector3d::Zero());
+  // a body of link i: the force and moment its motion needs
+  const auto add_body = [&](std::size_t i, double mass, const Pose& X_LCom, const Eigen::Matrix3d& inertia) {
+    if (mass <= 0.0) return;
+    const Pose X_RCom = X_RL[i] * X_LCom;
+    const Eigen::Vector3d c = X_RCom.translation() - X_RL[i].translation();
+    const Eigen::Matrix3d I = X_RCom.linear() * inertia * X_RCom.linear().transpose();
+    const Eigen::Vector3d a_com = m[i].a + m[i].dw.cross(c) + m[i].w.cross(m[i].w.cross(c));
+    const Eigen::Vector3d f = mass * a_com;
+    F[i] += f;
+    N[i] += I * m[i].dw + m[i].w.cross(I * m[i].w) + c.cross(f);
+  };
   for (std::size_t i = links.size(); i-- > 0;) {
     const LinkModel& link = links[i];
-    if (link.mass > 0.0) {
-      const Pose X_RCom = X_RL[i] * link.X_LCom;
-      const Eigen::Vector3d c = X_RCom.translation() - X_RL[i].translation();
-      const Eigen::Matrix3d I = X_RCom.linear() * link.inertia * X_RCom.linear().transpose();
-      const Eigen::Vector3d a_com = m[i].a + m[i].dw.cross(c) + m[i].w.cross(m[i].w.cross(c));
-      const Eigen::Vector3d f = link.mass * a_com;
-      F[i] += f;
-      N[i] += I * m[i].dw + m[i].w.cross(I * m[i].w) + c.cross(f);
+    add_body(i, link.mass, link.X_LCom, link.inertia);
+    if (payload != nullptr && payload->link == static_cast<int>(i)) {
+      add_body(i, payload->mass, payload->X_LCom, payload->inertia);
     }
     if (link.parent_joint < 0) continue;
     const int parent = model.joints()[link.parent_joint].parent_link;

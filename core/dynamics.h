@@ -9,11 +9,22 @@
 
 namespace dashbed::core {
 
+/// A rigid body carried by a link (an object in the gripper): its mass, inertial frame in the
+/// link frame and inertia about its centre of mass in that frame.
+struct Payload {
+  int link = -1;
+  double mass = 0.0;                                  ///< [kg]
+  Pose X_LCom = Pose::Identity();
+  Eigen::Matrix3d inertia = Eigen::Matrix3d::Zero();  ///< [kg m^2]
+};
+
 /// tau = M(q) qdd + C(q, qd) qd + g(q): the joint efforts [Nm or N] that produce the joint
 /// accelerations qdd at state (q, qd) under gravity `gravity_R` (expressed in the root frame,
-/// e.g. (0, 0, -9.81) for an upright robot). Recursive Newton-Euler.
+/// e.g. (0, 0, -9.81) for an upright robot), with `payload` (if given) rigidly added to its
+/// link. Recursive Newton-Euler.
 Eigen::VectorXd inverseDynamics(const RobotModel& model, const Eigen::VectorXd& q, const Eigen::VectorXd& qd,
-                                const Eigen::VectorXd& qdd, const Eigen::Vector3d& gravity_R);
+                                const Eigen::VectorXd& qdd, const Eigen::Vector3d& gravity_R,
+                                const Payload* payload = nullptr);
 
 /// The efforts that hold the robot still at q against gravity.
 Eigen::VectorXd gravityTorques(const RobotModel& model, const Eigen::VectorXd& q, const Eigen::Vector3d& gravity_R);

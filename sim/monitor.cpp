@@ -149,6 +149,12 @@ struct Monitor::State {
     return "?";
   }
 
+  /// Name of the joint at position q_index of robot r's model.
+  std::string jointName(int r, int q_index) const {
+    const core::RobotModel& model = *sim.robots()[r].model;
+    return model.joints()[model.movableJoints().at(static_cast<std::size_t>(q_index))].name;
+  }
+
   bool isFinger(const BodyRef& ref) const {
     return ref.kind == BodyRef::Kind::kRobot &&
            (ref.link == left_finger[ref.index] || ref.link == right_finger[ref.index]);
@@ -666,8 +672,9 @@ Report Monitor::finish(const PlanExecutor& executor) {
     execution.max_effort_ratio = stats.max_effort_ratio;
     report.robots.push_back(execution);
     if (stats.max_tracking_error > checks.tracking_error_limit) {
-      failures.push_back("tracking: " + execution.robot + " joint error " + fmt(stats.max_tracking_error) + " rad > " +
-                         fmt(checks.tracking_error_limit) + " rad");
+      failures.push_back("tracking: " + execution.robot + " " + s.jointName(static_cast<int>(r), stats.max_error_joint) +
+                         " error " + fmt(stats.max_tracking_error) + " rad > " + fmt(checks.tracking_error_limit) +
+                         " rad at " + fmt(stats.max_error_time) + " s");
     }
   }
   for (const ExecutionEvent& event : s.events) {

@@ -7,14 +7,17 @@
 namespace dashbed::sim {
 
 PlanExecutor::PlanExecutor(Simulation& sim, const core::Plan& plan, double plan_time_offset)
-    : sim_(sim), offset_(plan_time_offset) {
+    : sim_(sim), offset_(plan_time_offset), plan_(plan) {
   const core::World& world = sim.world();
   const std::size_t n = world.robots.size();
   trajectories_.resize(n);
   holds_.resize(n);
   stats_.resize(n);
+  gripping_.assign(n, -1);
+  payloads_.resize(n);
   for (std::size_t r = 0; r < n; ++r) {
     const core::PlacedRobot& robot = sim.robots()[r];
+    tcp_.push_back(robot.model->requireLink("tcp"));
     const Eigen::Vector3d gravity_root = robot.spec->X_WBase.linear().transpose() * world.physics.gravity;
     arm_controllers_.push_back(
         std::make_unique<controllers::JointPdController>(*robot.model, world.controller, gravity_root));
@@ -52,29 +55,69 @@ void PlanExecutor::step() {
   while (next_command_ < gripper_commands_.size() && gripper_commands_[next_command_].t <= planTime() + 1e-12) {
     const core::GripperCommand& command = gripper_commands_[next_command_++];
     for (std::size_t r = 0; r < world.robots.size(); ++r) {
-      if (world.robots[r].name == command.robot) grippers_[r].command(command.action, command.force);
+      if (world.robots[r].name != command.robot) continue;
+      grippers_[r].command(command.action, command.force);
+      payloads_[r].reset();
+      gripping_[r] = command.action == core::GripperAction::kClose ? objectClosedOn(static_cast<int>(r), command.t) : -1;
     }
+  }
+  // a gripper closed on an object takes it as payload unless another robot still holds it
+  for (std::size_t r = 0; r < world.robots.size(); ++r) {
+    const int o = gripping_[r];
+    if (o < 0 || payloads_[r]) continue;
+    bool held_elsewhere = false;
+    for (std::size_t k = 0; k < world.robots.size(); ++k) held_elsewhere |= payloads_[k] && gripping_[k] == o;
+    if (!held_elsewhere) payloads_[r] = payloadOf(static_cast<int>(r), o);
   }
   for (std::size_t r = 0; r < world.robots.size(); ++r) {
     const int ri = static_cast<int>(r);
     const Eigen::VectorXd q = sim_.jointPositions(ri);
     const Eigen::VectorXd qd = sim_.jointVelocities(ri);
     const controllers::JointReference ref = reference(ri);
-    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q, qd, ref);
+    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q, qd, ref, payloads_[r] ? &*payloads_[r] : nullptr);
     sim_.setArmTorques(ri, torques.tau);
     sim_.setFingerServo(ri, grippers_[r].servo(0.5 * (q[6] + q[7])));
 
     TrackingStats& stats = stats_[r];
     for (int j = 0; j < 6; ++j) {
       const double error = std::abs(ref.q[j] - q[j]);
-      stats.max_joint_error[j] = std::max(stats.max_joint_error[j], error);
-      stats.max_tracking_error = std::max(stats.max_tracking_error, error);
+      if (error > stats.max_tracking_error) {
+        stats.max_tracking_error = error;
+        stats.max_error_joint = j;
+        stats.max_error_time = planTime();
+      }
     }
     stats.max_effort_ratio = std::max(stats.max_effort_ratio, torques.max_effort_ratio);
     if (torques.saturated) ++stats.saturated_steps;
     ++stats.steps;
   }
   sim_.step();
+}
+
+int PlanExecutor::objectClosedOn(int r, double t) const {
+  const core::World& world = sim_.world();
+  const std::string& name = world.robots[static_cast<std::size_t>(r)].name;
+  for (const core::PlanAction& action : plan_.actions) {
+    const bool grasps = (action.type == core::ActionType::kPick && action.robot == name) ||
+                        (action.type == core::ActionType::kHandoff && action.receiver == name);
+    if (!grasps || t < action.start || t > action.end) continue;
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+      if (world.objects[o].name == action.object) return static_cast<int>(o);
+    }
+  }
+  return -1;
+}
+
+core::Payload PlanExecutor::payloadOf(int r, int o) const {
+  const core::ObjectSpec& object = sim_.world().objects[static_cast<std::size_t>(o)];
+  const Eigen::Vector3d s2 = object.size.cwiseProduct(object.size);
+  core::Payload payload;
+  payload.link = tcp_[r];
+  payload.mass = object.mass;
+  payload.X_LCom = sim_.linkPose(r, tcp_[r]).inverse() * sim_.objectPose(o);
+  // a solid box about its centre
+  payload.inertia = (object.mass / 12.0 * Eigen::Vector3d(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
+  return payload;
 }
 
 }  // namespace dashbed::sim

@@ -18,7 +18,8 @@ namespace dashbed::sim {
 /// Per-robot tracking statistics accumulated while executing.
 struct TrackingStats {
   double max_tracking_error = 0.0;  ///< [rad] max over the arm joints and steps
-  std::array<double, 6> max_joint_error{};  ///< [rad] per joint
+  int max_error_joint = -1;         ///< arm joint (0..5) of the max error
+  double max_error_time = 0.0;      ///< [s] plan time of the max error
   long saturated_steps = 0;         ///< steps with some arm joint at its effort limit
   long steps = 0;
   double max_effort_ratio = 0.0;
@@ -36,13 +37,19 @@ class PlanExecutor {
   double planTime() const;
   ~PlanExecutor();
 
-  /// Applies the controls for the current time and advances one time step.
+  /// Applies the controls for the current time and advances one time step. Each arm
+  /// controller is told its payload, as a UR controller is with set_payload: when its gripper
+  /// closes on the object of a pick or of a handoff it receives (per the plan's actions), the
+  /// object's mass and inertia (world file) where the object sits in the gripper then; in a
+  /// handoff the receiver takes it over when the giver opens. Opening drops it.
   void step();
 
   /// The arm reference of robot r at the current time.
   controllers::JointReference reference(int r) const;
   const controllers::HandeController& gripper(int r) const { return grippers_[r]; }
   const TrackingStats& tracking(int r) const { return stats_[r]; }
+  /// The payload robot r's arm controller compensates now (see step), if any.
+  const std::optional<core::Payload>& payload(int r) const { return payloads_[r]; }
 
  private:
   Simulation& sim_;
@@ -54,6 +61,16 @@ class PlanExecutor {
   std::vector<core::GripperCommand> gripper_commands_;  // sorted by time
   std::size_t next_command_ = 0;
   std::vector<TrackingStats> stats_;
+  std::vector<int> tcp_;                               // per robot, model link
+  std::vector<int> gripping_;                          // per robot: object closed on (its payload), or -1
+  std::vector<std::optional<core::Payload>> payloads_;  // per robot
+
+  /// The object robot r closes on at plan time t: that of its pick, or of a handoff it
+  /// receives, under way at t; -1 for none.
+  int objectClosedOn(int r, double t) const;
+  /// Robot r's payload: object o as it sits in r's gripper now.
+  core::Payload payloadOf(int r, int o) const;
+  const core::Plan& plan_;
 };
 
 }  // namespace dashbed::sim

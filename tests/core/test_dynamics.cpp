@@ -45,6 +45,40 @@ TEST_CASE("gravity torques equal the sum of J_com^T m g over the links", "[dynam
   }
 }
 
+TEST_CASE("a payload adds its weight and its kinetic energy to the link carrying it", "[dynamics]") {
+  const RobotModel& dut = ur5eHande();
+  const Eigen::Vector3d g(0, 0, -9.81);
+  Payload payload;
+  payload.link = dut.requireLink("tcp");
+  payload.mass = 0.7;
+  payload.X_LCom.translation() = Eigen::Vector3d(0.01, -0.02, 0.03);
+  payload.X_LCom.linear() = Eigen::AngleAxisd(0.4, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  payload.inertia = Eigen::Vector3d(2e-3, 3e-3, 4e-3).asDiagonal();
+  std::mt19937_64 rng(5);
+  std::normal_distribution<double> rate(0.0, 1.0);
+  const Eigen::VectorXd zero = Eigen::VectorXd::Zero(8);
+  for (int trial = 0; trial < 50; ++trial) {
+    const Eigen::VectorXd q = randomQ(rng);
+    const Eigen::MatrixXd J = jacobian(dut, q, payload.link, payload.X_LCom.translation());
+    // holding it still: -J^T (m g) more
+    const Eigen::VectorXd weight = inverseDynamics(dut, q, zero, zero, g, &payload) - gravityTorques(dut, q, g);
+    REQUIRE((weight + J.topRows<3>().transpose() * (payload.mass * g)).norm() < 1e-9);
+    // moving: 0.5 qd^T M qd with the payload = the robot's kinetic energy + the payload's
+    Eigen::MatrixXd M(8, 8);
+    for (int k = 0; k < 8; ++k) {
+      M.col(k) = inverseDynamics(dut, q, zero, Eigen::VectorXd::Unit(8, k), Eigen::Vector3d::Zero(), &payload);
+    }
+    Eigen::VectorXd qd(8);
+    for (int i = 0; i < 8; ++i) qd[i] = rate(rng);
+    const Eigen::Vector3d v = J.topRows<3>() * qd, w = J.bottomRows<3>() * qd;
+    const Eigen::Matrix3d R_RC = linkPoses(dut, q)[static_cast<std::size_t>(payload.link)].linear() *
+                                 payload.X_LCom.linear();
+    const double payload_energy =
+        0.5 * payload.mass * v.squaredNorm() + 0.5 * w.dot(R_RC * payload.inertia * R_RC.transpose() * w);
+    REQUIRE(0.5 * qd.dot(M * qd) == Approx(kineticEnergy(dut, q, qd) + payload_energy).epsilon(1e-10));
+  }
+}
+
 TEST_CASE("mass matrix is symmetric positive definite and matches the kinetic energy", "[dynamics]") {
   const RobotModel& dut = ur5eHande();
   std::mt19937_64 rng(4);

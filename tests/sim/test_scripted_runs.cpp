@@ -4,10 +4,13 @@
 
 #include <catch2/catch.hpp>
 
+#include <array>
 #include <numbers>
+#include <optional>
 #include <string>
 
 #include "core/world_loader.h"
+#include "sim/plan_executor.h"
 #include "sim/report.h"
 #include "sim/run_plan.h"
 #include "tools/scripted_plan.h"
@@ -21,8 +24,7 @@ const core::LoadedWorld& defaultWorld() {
   return world;
 }
 
-sim::Report simulate(const std::string& script) {
-  const core::LoadedWorld& world = defaultWorld();
+sim::Report simulate(const std::string& script, const core::LoadedWorld& world = defaultWorld()) {
   const core::Plan plan = tools::planFromScript(world, script);
   sim::validatePlanForWorld(plan, *world.world, *world.robots, "script");
   return sim::runPlan(*world.world, *world.robots, plan, "script");
@@ -119,4 +121,67 @@ TEST_CASE("two runs of the same plan give byte-identical reports", "[sim][script
   const std::string first = sim::writeReportJson(simulate(script));
   const std::string second = sim::writeReportJson(simulate(script));
   CHECK(first == second);
+}
+
+TEST_CASE("an object in the gripper is the arm controller's payload from closing on it until opening",
+          "[sim][scripted]") {
+  const core::LoadedWorld& world = defaultWorld();
+  const core::Plan plan =
+      tools::planFromScript(world, "r1 picks cube_0; r1 hands cube_0 to r0; r0 places cube_0 in bin_red");
+  // the time of the first command of `robot` to `action` after `after`
+  const auto command = [&](const std::string& robot, core::GripperAction action, double after) {
+    for (const core::GripperCommand& c : plan.gripper) {
+      if (c.robot == robot && c.action == action && c.t > after) return c.t;
+    }
+    FAIL("no such command of " << robot);
+    return 0.0;
+  };
+  // r1 closes on the cube, opens in the handoff; r0 closes in the handoff, opens in the place
+  const double r1_close = command("r1", core::GripperAction::kClose, 0.0);
+  const double r1_open = command("r1", core::GripperAction::kOpen, r1_close);
+  const double r0_close = command("r0", core::GripperAction::kClose, 0.0);
+  const double r0_open = command("r0", core::GripperAction::kOpen, r0_close);
+  REQUIRE(r0_close < r1_open);  // both hold the cube in between
+
+  sim::Simulation sim(*world.world, *world.robots);
+  sim::PlanExecutor dut(sim, plan);
+  // per robot: the plan times at which it first and last had a payload
+  std::array<std::optional<double>, 2> first, last;
+  bool both = false;  // in the handoff the receiver takes the payload over from the giver
+  const double step = world.world->physics.time_step;
+  while (dut.planTime() < r0_open + 0.5) {
+    dut.step();
+    const double t = dut.planTime() - step;  // the step just applied
+    for (int r = 0; r < 2; ++r) {
+      if (!dut.payload(r)) continue;
+      if (!first[r]) {
+        first[r] = t;
+        CHECK(dut.payload(r)->mass == world.world->objects[0].mass);
+        CHECK(dut.payload(r)->X_LCom.translation().norm() < 0.03);  // the cube between the fingers
+      }
+      last[r] = t;
+    }
+    both |= dut.payload(0) && dut.payload(1);
+  }
+  CHECK(!both);
+  REQUIRE(first[1]);
+  REQUIRE(first[0]);
+  CHECK(*first[1] == Approx(r1_close).margin(step));
+  CHECK(*last[1] == Approx(r1_open - step).margin(step));
+  CHECK(*first[0] == Approx(r1_open).margin(step));
+  CHECK(*last[0] == Approx(r0_open - step).margin(step));
+}
+
+TEST_CASE("a heavy cube carried through a handoff is tracked as closely as a light one", "[sim][scripted]") {
+  // 2 kg: gravity on it alone would bend the light wrist joints out of the tracking bound
+  core::World heavy = *defaultWorld().world;
+  heavy.objects[0].mass = 2.0;
+  const core::LoadedWorld world = core::validateWorld(heavy);
+  const sim::Report report = simulate("r1 picks cube_0; r1 hands cube_0 to r0; r0 places cube_0 in bin_red", world);
+  INFO(sim::writeReportJson(report));
+  CHECK(report.passed());
+  for (const sim::RobotExecution& robot : report.robots) {
+    INFO(robot.robot);
+    CHECK(robot.max_tracking_error < 0.01);
+  }
 }
