@@ -115,7 +115,7 @@ void addGenCommand(CLI::App& app) {
       "placed in slot columns chosen by the seed: a green object goes to the back slot and its "
       "blue partner to the front slot directly in front of it, which blocks the back one, so "
       "the green object must be placed first. Objects start at random spots on the table "
-      "between the robots and the shelf.");
+      "between the robots and the shelf, turned by at most 30 degrees.");
   shelf->add_option("--objects", shelf_options->params.objects,
                     "Number of objects: even, 2..12 (pairs of green back + blue front)")
       ->capture_default_str();
