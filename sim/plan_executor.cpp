@@ -58,7 +58,8 @@ void PlanExecutor::step() {
       if (world.robots[r].name != command.robot) continue;
       grippers_[r].command(command.action, command.force);
       payloads_[r].reset();
-      gripping_[r] = command.action == core::GripperAction::kClose ? objectClosedOn(static_cast<int>(r), command.t) : -1;
+      const bool close = command.action == core::GripperAction::kClose;
+      gripping_[r] = close ? objectClosedOn(static_cast<int>(r), command.t) : -1;
     }
   }
   // a gripper closed on an object takes it as payload unless another robot still holds it
@@ -74,7 +75,8 @@ void PlanExecutor::step() {
     const Eigen::VectorXd q = sim_.jointPositions(ri);
     const Eigen::VectorXd qd = sim_.jointVelocities(ri);
     const controllers::JointReference ref = reference(ri);
-    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q, qd, ref, payloads_[r] ? &*payloads_[r] : nullptr);
+    const core::Payload* payload = payloads_[r] ? &*payloads_[r] : nullptr;
+    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q, qd, ref, payload);
     sim_.setArmTorques(ri, torques.tau);
     sim_.setFingerServo(ri, grippers_[r].servo(0.5 * (q[6] + q[7])));
 
@@ -116,7 +118,8 @@ core::Payload PlanExecutor::payloadOf(int r, int o) const {
   payload.mass = object.mass;
   payload.X_LCom = sim_.linkPose(r, tcp_[r]).inverse() * sim_.objectPose(o);
   // a solid box about its centre
-  payload.inertia = (object.mass / 12.0 * Eigen::Vector3d(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y())).asDiagonal();
+  const Eigen::Vector3d moments(s2.y() + s2.z(), s2.x() + s2.z(), s2.x() + s2.y());
+  payload.inertia = (object.mass / 12.0 * moments).asDiagonal();
   return payload;
 }
 
