@@ -443,6 +443,7 @@ struct CheckerState {
   CollisionChecker::Counters* counters = nullptr;
   Solver solver;
   std::vector<Slot> slots;  // one per robot
+  std::vector<Slot> standing;  // the other robots of a motionClearOf query
   std::vector<const AabbNode*> stack;
   std::vector<int> order;  // bisection order of sample indices for `order_n` intervals
   int order_n = -1;
@@ -1499,6 +1500,36 @@ bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from,
     state.forward(slot_a, a, state.q_a, held_a);
     state.forward(slot_b, b, state.q_b, held_b);
     if (state.interRobotCollision(slot_a, slot_b)) return false;
+  }
+  return true;
+}
+
+bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                                     const std::optional<HeldObject>& held,
+                                     std::span<const StandingRobot> others) {
+  const detail::SceneData& scene = *scene_->data_;
+  const RobotData& data = requireRobot(scene, robot);
+  // a standing robot takes one step: motionsFree would check this many samples
+  const int n = scene_->motionSteps(robot, q_from, q_to, held);  // validates the arguments
+  auto& state = *state_;
+  state.standing.resize(others.size());
+  for (std::size_t k = 0; k < others.size(); ++k) {
+    const StandingRobot& other = others[k];
+    const RobotData& data_other = requireRobot(scene, other.robot);
+    if (other.robot == robot) throw std::invalid_argument("collision check: motionClearOf needs other robots");
+    requireConfiguration(data_other, other.q, "q of a standing robot");
+    requireHeld(scene, other.held);
+    state.forward(state.standing[k], data_other, other.q, other.held);
+  }
+  auto& slot = state.slots[robot];
+  state.q_a.resize(q_from.size());
+  for (const int i : state.bisectionOrder(n)) {
+    const double s = static_cast<double>(i) / n;
+    state.q_a.noalias() = q_from + s * (q_to - q_from);
+    state.forward(slot, data, state.q_a, held);
+    for (auto& other : state.standing) {
+      if (state.interRobotCollision(slot, other)) return false;
+    }
   }
   return true;
 }

@@ -98,6 +98,13 @@ struct RestingObject {
   core::Pose X_WO = core::Pose::Identity();  ///< pose of the object's centre in W
 };
 
+/// Another robot standing still at q (arm and fingers), holding `held` if given.
+struct StandingRobot {
+  int robot = -1;
+  Eigen::VectorXd q;
+  std::optional<HeldObject> held;
+};
+
 /// Every object of the world at its start pose.
 std::vector<RestingObject> startPlacement(const core::World& world);
 
@@ -236,6 +243,11 @@ class CollisionChecker {
                    const std::optional<HeldObject>& held_a, int robot_b,
                    const Eigen::VectorXd& q_b_from, const Eigen::VectorXd& q_b_to,
                    const std::optional<HeldObject>& held_b);
+
+  /// motionsFree of one robot's motion against each of `others` standing still, in one pass
+  /// over the motion's samples (each evaluated once for all of them). True when free of all.
+  bool motionClearOf(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+                     const std::optional<HeldObject>& held, std::span<const StandingRobot> others);
 
   /// robotsFree, and when free a lower bound on the distance between the two robots' bounding
   /// spheres (bodies and held objects; pairs of bodies neither of which moves left out), so that

@@ -56,14 +56,16 @@ Edge edgeOf(const Precedence& p, const std::vector<ScheduleSegment>& segments) {
 }
 
 /// Another robot's configuration (with its fingers) and held object, for a detour to avoid.
-struct Obstacle {
-  int robot = -1;
-  Eigen::VectorXd q;
-  std::optional<HeldObject> held;
-  bool operator==(const Obstacle& o) const {
-    return robot == o.robot && q == o.q && sameHeld(held, o.held);
-  }
-};
+using Obstacle = StandingRobot;
+
+bool sameObstacle(const Obstacle& x, const Obstacle& y) {
+  return x.robot == y.robot && x.q == y.q && sameHeld(x.held, y.held);
+}
+
+/// Whether `states` holds `o` already.
+bool listed(const std::vector<Obstacle>& states, const Obstacle& o) {
+  return std::any_of(states.begin(), states.end(), [&](const Obstacle& x) { return sameObstacle(x, o); });
+}
 
 /// The low level's constraint: move segment `segment` takes a path on its roadmap that keeps
 /// clear of `avoid` (the other robot where it stood or passed during the segment).
@@ -353,7 +355,7 @@ std::vector<Obstacle> obstaclesDuring(const ScheduleView& view, const Schedule& 
   for (Millis t = t0;; t = std::min(t + kObstacleStep, t1)) {
     const RobotState state = view.at(other, toSeconds(t), true);
     Obstacle o{other, view.full(state), state.held};
-    if (std::find(states.begin(), states.end(), o) == states.end()) states.push_back(std::move(o));
+    if (!listed(states, o)) states.push_back(std::move(o));
     if (t == t1) break;
   }
   return states;
@@ -586,15 +588,13 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     if (it == detours.end()) it = detours.insert(detours.end(), DetourConstraint{segment, seg.move, {}});
     const std::size_t known = it->avoid.size();
     for (Obstacle& o : avoid) {
-      if (std::find(it->avoid.begin(), it->avoid.end(), o) == it->avoid.end()) it->avoid.push_back(std::move(o));
+      if (!listed(it->avoid, o)) it->avoid.push_back(std::move(o));
     }
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
     const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-      const Eigen::VectorXd qa = fullConfiguration(a, seg.finger), qb = fullConfiguration(b, seg.finger);
-      return std::all_of(obstacles.begin(), obstacles.end(), [&](const Obstacle& o) {
-        return checker.motionsFree(seg.robot, qa, qb, seg.held, o.robot, o.q, o.q, o.held);
-      });
+      return checker.motionClearOf(seg.robot, fullConfiguration(a, seg.finger), fullConfiguration(b, seg.finger),
+                                   seg.held, obstacles);
     });
     if (move == nullptr) return std::nullopt;
     std::vector<ScheduleSegment> segments = node.schedule.segments;

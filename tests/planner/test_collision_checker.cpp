@@ -1,5 +1,6 @@
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <memory>
 #include <numbers>
@@ -726,4 +727,51 @@ TEST_CASE("timedPathsFree checks two robots at common times", "[planner][collisi
   // ... but not if it leaves too early
   const planner::TimedPath early{{0.0, 0.5}, {home1, reach1}};
   CHECK_FALSE(dut.timedPathsFree(0, sweep, std::nullopt, 1, early, std::nullopt));
+}
+
+TEST_CASE("motionClearOf answers as motionsFree against each standing robot", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const core::RobotSet& robots = *loaded.robots;
+  CollisionChecker dut(sortingScene());
+  const core::ArmConfig centre0 = solveNearHome(robots[0], tcpDown({-0.035, 0.0, 0.95}));
+  const core::ArmConfig centre1 = solveNearHome(robots[1], tcpDown({0.035, 0.0, 0.95}));
+  // r0's motions: sweeps across the centre, to it, and staying home
+  std::vector<std::pair<VectorXd, VectorXd>> motions;
+  for (const double swing : {0.3, 0.8}) {
+    core::ArmConfig left = centre0, right = centre0;
+    left[0] -= swing;
+    right[0] += swing;
+    motions.emplace_back(fullQ(left, 0.025), fullQ(right, 0.025));
+  }
+  motions.emplace_back(homeQ(world, 0), fullQ(centre0, 0.0));
+  motions.emplace_back(homeQ(world, 0), homeQ(world, 0));
+  // r1 standing: at home, at the centre, on the way, and beside it
+  std::vector<planner::StandingRobot> standing;
+  for (const double s : {0.0, 0.5, 1.0}) {
+    standing.push_back({1, homeQ(world, 1) + s * (fullQ(centre1, 0.025) - homeQ(world, 1)), std::nullopt});
+  }
+  core::ArmConfig beside = centre1;
+  beside[0] += 0.6;
+  standing.push_back({1, fullQ(beside, 0.025), std::nullopt});
+  int clear = 0, blocked = 0;
+  for (const auto& [from, to] : motions) {
+    for (std::size_t first = 0; first < standing.size(); ++first) {
+      for (std::size_t count = 1; first + count <= standing.size(); ++count) {
+        const std::span<const planner::StandingRobot> others(standing.data() + first, count);
+        const bool expected = std::all_of(others.begin(), others.end(), [&](const planner::StandingRobot& o) {
+          return dut.motionsFree(0, from, to, std::nullopt, o.robot, o.q, o.q, o.held);
+        });
+        CHECK(dut.motionClearOf(0, from, to, std::nullopt, others) == expected);
+        ++(expected ? clear : blocked);
+      }
+    }
+  }
+  // both answers occur
+  CHECK(clear > 0);
+  CHECK(blocked > 0);
+  CHECK(dut.motionClearOf(0, motions[0].first, motions[0].second, std::nullopt, {}));
+  const planner::StandingRobot itself{0, homeQ(world, 0), std::nullopt};
+  CHECK_THROWS_AS(dut.motionClearOf(0, motions[0].first, motions[0].second, std::nullopt, {&itself, 1}),
+                  std::invalid_argument);
 }
