@@ -210,6 +210,7 @@ RunRecord runOnce(const BenchCase& c, std::uint64_t seed, const BenchOptions& op
   choice.seed = seed;
   choice.time_budget = c.method == "greedy" ? options.greedy_budget : options.optimal_budget;
   choice.max_rounds = options.max_rounds;
+  choice.fallback_rounds = options.fallback_rounds;
   planner::PlanResult result;
   const auto start = std::chrono::steady_clock::now();
   const double cpu_start = threadCpuSeconds();
@@ -398,7 +399,8 @@ std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& o
   out << "Seeds 1.." << options.seeds << " (world seed = planner seed), budget per run "
       << core::significantText(options.greedy_budget, 6) << " s for Greedy, "
       << core::significantText(options.optimal_budget, 6) << " s for MM-DaSH, at most " << options.max_rounds
-      << " expansion rounds, " << options.jobs << (options.jobs == 1 ? " run" : " runs") << " at a time on "
+      << " expansion rounds (a sequential plan waits " << options.fallback_rounds << " for a direct one), "
+      << options.jobs << (options.jobs == 1 ? " run" : " runs") << " at a time on "
       << std::thread::hardware_concurrency() << " hardware threads, simulation " << (options.simulate ? "on" : "off")
       << ".\n\n";
   out << "Construction: task-space and motion hypergraph. Search: hyperpath queries and conflict resolution "

@@ -28,6 +28,7 @@
 #include <vector>
 
 #include "sim/render/image.h"
+#include "tools/run_planner.h"
 
 namespace dashbed::tools {
 
@@ -75,6 +76,7 @@ struct BenchOptions {
   double greedy_budget = 120.0;  ///< wall-clock budget per greedy run [s] (dashbed plan's default)
   double optimal_budget = 30.0;  ///< per MM-DaSH run [s]
   int max_rounds = 30;
+  int fallback_rounds = PlannerChoice{}.fallback_rounds;
   bool simulate = true;
   int jobs = 1;
   std::string out = "bench_plan";

@@ -67,6 +67,9 @@ void addPlannerOptions(CLI::App& command, PlannerChoice& choice) {
   command.add_option("--max-rounds", choice.max_rounds, "representation expansion rounds")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
+  command.add_option("--fallback-rounds", choice.fallback_rounds, kFallbackRoundsHelp)
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command.add_flag("--verbose", choice.verbose, "print the planner's progress (queries, conflict resolutions) on stderr");
 }
 

@@ -22,6 +22,7 @@ planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoic
   if (choice.max_rounds < 1) throw std::invalid_argument("the number of rounds must be at least 1");
   settings.seed = choice.seed;
   settings.max_rounds = choice.max_rounds;
+  settings.sequential_fallback_rounds = choice.fallback_rounds;
   planner::PlannerBudget budget;
   const auto started = std::chrono::steady_clock::now();
   budget.deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(

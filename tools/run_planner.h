@@ -29,14 +29,22 @@ struct PlannerChoice {
   std::uint64_t seed = 1;         ///< sampling seed: same world, method and seed give the same plan
   double time_budget = 120.0;     ///< wall-clock budget [s]; status timeout beyond it
   int max_rounds = 30;            ///< representation expansion rounds before giving up (timeout)
+  /// rounds a sequential plan (one object at a time) waits for one whose robots work side by side
+  int fallback_rounds = planner::PlannerSettings{}.sequential_fallback_rounds;
   bool verbose = false;           ///< the planner's progress on stderr
 };
 
-/// Adds --method, --seed, --time-budget, --max-rounds and --verbose to a command.
+/// The help text of --fallback-rounds (plan, run, bench plan, stress).
+inline constexpr const char* kFallbackRoundsHelp =
+    "rounds of representation expansion a sequential plan (one object at a time) waits for a plan whose robots "
+    "work side by side; more find shorter plans on crowded worlds, taking longer";
+
+/// Adds --method, --seed, --time-budget, --max-rounds, --fallback-rounds and --verbose to a
+/// command.
 void addPlannerOptions(CLI::App& command, PlannerChoice& choice);
 
 /// Runs the DaSH planner on `world`. Throws std::invalid_argument for a bad choice (unknown
-/// method, non-positive budget or rounds).
+/// method, non-positive budget or rounds; the planner's own for negative fallback rounds).
 planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoice& choice);
 
 /// A few lines for people: status (and reason), stage times, representation sizes, makespan.
