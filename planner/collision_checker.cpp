@@ -753,6 +753,22 @@ struct CheckerState {
     order_n = n;
     return order;
   }
+
+  /// Places `robot` in `slot` at the n + 1 samples of the straight motion q_from -> q_to, in
+  /// bisection order, calling visit(s) (s in [0, 1] along the motion) after each; stops when
+  /// visit returns true. True when stopped.
+  template <class Visit>
+  bool sweep(Slot& slot, const RobotData& robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+             const std::optional<HeldObject>& held, int n, Visit&& visit) {
+    q_a.resize(q_from.size());
+    for (const int i : bisectionOrder(n)) {
+      const double s = static_cast<double>(i) / n;
+      q_a.noalias() = q_from + s * (q_to - q_from);
+      forward(slot, robot, q_a, held);
+      if (visit(s)) return true;
+    }
+    return false;
+  }
 };
 
 }  // namespace detail
@@ -1396,14 +1412,7 @@ bool CollisionChecker::motionFree(int robot, const Eigen::VectorXd& q_from, cons
   requireObjects(scene, objects);
   auto& state = *state_;
   auto& slot = state.slots[robot];
-  state.q_a.resize(q_from.size());
-  for (const int i : state.bisectionOrder(n)) {
-    const double s = static_cast<double>(i) / n;
-    state.q_a.noalias() = q_from + s * (q_to - q_from);
-    state.forward(slot, data, state.q_a, held);
-    if (state.robotCollision(slot, objects)) return false;
-  }
-  return true;
+  return !state.sweep(slot, data, q_from, q_to, held, n, [&](double) { return state.robotCollision(slot, objects); });
 }
 
 std::vector<char> CollisionChecker::motionObjectHits(int robot, const Eigen::VectorXd& q_from,
@@ -1446,13 +1455,11 @@ std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const E
   std::vector<std::size_t> near;
   near.reserve(objects.size());
   bool first = true;
+  bool collides = false;
   std::size_t left = 0;
-  state.q_a.resize(q_from.size());
-  for (const int i : state.bisectionOrder(n)) {
-    const double s = static_cast<double>(i) / n;
-    state.q_a.noalias() = q_from + s * (q_to - q_from);
-    state.forward(slot, data, state.q_a, held);
-    if (check_robot && (state.staticCollision(slot) || state.selfCollision(slot))) return std::nullopt;
+  // stops at a collision with the static scene or itself, or when nothing is left to find
+  state.sweep(slot, data, q_from, q_to, held, n, [&](double) {
+    if (check_robot && (state.staticCollision(slot) || state.selfCollision(slot))) return collides = true;
     if (first || left > 0) detail::CheckerState::updateBounds(slot, held_data);
     if (first) {
       first = false;
@@ -1463,7 +1470,7 @@ std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const E
         if (!detail::sphereAabbApart(poses[k].p, object.radius + travel + kSlack, slot.lo, slot.hi)) near.push_back(k);
       }
       left = near.size();
-      if (left == 0 && !check_robot) return hits;
+      if (left == 0 && !check_robot) return true;
     }
     for (const std::size_t k : near) {
       if (left == 0) break;
@@ -1472,9 +1479,11 @@ std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const E
       if (detail::sphereAabbApart(poses[k].p, object.radius + kSlack, slot.lo, slot.hi)) continue;
       if (!state.oneObjectCollision(slot, objects[k], poses[k])) continue;
       hits[k] = 1;
-      if (--left == 0 && !check_robot) return hits;
+      if (--left == 0 && !check_robot) return true;
     }
-  }
+    return false;
+  });
+  if (collides) return std::nullopt;
   return hits;
 }
 
@@ -1491,17 +1500,12 @@ bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from,
   auto& state = *state_;
   auto& slot_a = state.slots[robot_a];
   auto& slot_b = state.slots[robot_b];
-  state.q_a.resize(q_a_from.size());
   state.q_b.resize(q_b_from.size());
-  for (const int i : state.bisectionOrder(n)) {
-    const double s = static_cast<double>(i) / n;
-    state.q_a.noalias() = q_a_from + s * (q_a_to - q_a_from);
+  return !state.sweep(slot_a, a, q_a_from, q_a_to, held_a, n, [&](double s) {
     state.q_b.noalias() = q_b_from + s * (q_b_to - q_b_from);
-    state.forward(slot_a, a, state.q_a, held_a);
     state.forward(slot_b, b, state.q_b, held_b);
-    if (state.interRobotCollision(slot_a, slot_b)) return false;
-  }
-  return true;
+    return state.interRobotCollision(slot_a, slot_b);
+  });
 }
 
 bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
@@ -1522,16 +1526,10 @@ bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, c
     state.forward(state.standing[k], data_other, other.q, other.held);
   }
   auto& slot = state.slots[robot];
-  state.q_a.resize(q_from.size());
-  for (const int i : state.bisectionOrder(n)) {
-    const double s = static_cast<double>(i) / n;
-    state.q_a.noalias() = q_from + s * (q_to - q_from);
-    state.forward(slot, data, state.q_a, held);
-    for (auto& other : state.standing) {
-      if (state.interRobotCollision(slot, other)) return false;
-    }
-  }
-  return true;
+  return !state.sweep(slot, data, q_from, q_to, held, n, [&](double) {
+    return std::any_of(state.standing.begin(), state.standing.end(),
+                       [&](auto& other) { return state.interRobotCollision(slot, other); });
+  });
 }
 
 namespace {
