@@ -126,7 +126,10 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
 /// object relabelled with each of its six faces up, i.e. every approach along a face normal,
 /// with the receiver coming in across both the giver's approach and closing axes (and so
 /// closing along the giver's approach axis), its pads fitting between the giver's fingers with
-/// kHandoffClearance to spare (not so on a cube under 40 mm). This is the handoff that holds in
+/// kHandoffClearance to spare (not so on a cube under 40 mm), and its open fingers passing the
+/// object with more than the collision checker's margins (`margin` on the receiver's fingers
+/// and on the object the giver holds) on either side (not so on a 45 mm cube: 2.5 mm beside it
+/// in the Hand-E's 50 mm). This is the handoff that holds in
 /// simulation (the scripted-plan tool's: giver level, receiver from above): a receiver coming
 /// head-on lost the cube when the giver withdrew, and one coming along the giver's closing axis
 /// had its housing next to a giver finger, which touched it when the giver opened.
@@ -136,7 +139,7 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
 /// in the middle or at the other end. The receiver then ends with a side grasp it can slide
 /// into a shelf. Grasps whose object would reach back into the receiver's housing are left out
 /// (an end-on grasp of a tall item with the TCP at its centre). Fixed order, no repeats.
-std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver) {
+std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, double margin) {
   const Vector3d giver_closing = giver.X_OT.linear().col(0);
   const Vector3d giver_width = giver.X_OT.linear().col(1);
   const Vector3d giver_approach = giver.X_OT.linear().col(2);
@@ -148,6 +151,8 @@ std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver) {
         // how far the object reaches back from the TCP, towards the housing
         const double behind = 0.5 * size.dot(approach.cwiseAbs()) - grasp.X_OT.translation().dot(approach);
         if (behind > kHousingBehindTcp - kHandoffClearance) continue;
+        const double width = size.dot(grasp.X_OT.linear().col(0).cwiseAbs());  // across the fingers
+        if (width + 4 * margin >= core::kHandeMaxOpening) continue;
         // across: the receiver's pads, kFingertipWidth wide along the giver's closing axis, fit
         // between the giver's fingers (a 30 mm cube leaves 0.4 mm beside a 29.2 mm pad)
         const double pad_offset = std::abs((grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_closing));
@@ -719,7 +724,8 @@ std::vector<TransitionSample> TransitionSampler::place(int hyperarc, const Grasp
 }
 
 std::vector<Grasp> TransitionSampler::handoffGrasps(int object, const Grasp& giver) const {
-  return receiverGrasps(world_->world->objects.at(static_cast<std::size_t>(object)).size, giver);
+  return receiverGrasps(world_->world->objects.at(static_cast<std::size_t>(object)).size, giver,
+                        scene_->settings().margin);
 }
 
 std::vector<TransitionSample> TransitionSampler::handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng,
@@ -731,8 +737,7 @@ std::vector<TransitionSample> TransitionSampler::handoff(int hyperarc, const Gra
   const Part giver{hyperarc, &giver_arm, arc.object, Pose::Identity(), giver_grasp};
   const Part receiver{hyperarc, &receiver_arm, arc.object, Pose::Identity(), Grasp{}};
   const HandoffFrame frame = handoffFrame(c.world, arc.robot, arc.receiver);
-  const std::vector<Grasp> grasps =
-      receiverGrasps(c.world.objects[static_cast<std::size_t>(arc.object)].size, giver_grasp);
+  const std::vector<Grasp> grasps = handoffGrasps(arc.object, giver_grasp);
   std::vector<TransitionSample> samples;
   if (grasps.empty()) return samples;
   for (int draw = 0; draw < kDrawsPerSample * count && static_cast<int>(samples.size()) < count; ++draw) {

@@ -158,11 +158,14 @@ TEST_CASE("objects the default and shelving worlds place are not proven never pl
   }
 }
 
-TEST_CASE("a 30 mm cube that must be handed over makes the problem infeasible", "[planner][dash]") {
-  // the receiver's 29.2 mm wide pads do not fit between the giver's fingers on a 30 mm cube
+TEST_CASE("a cube too small or too large to be handed over makes the problem infeasible", "[planner][dash]") {
+  // 30 mm: the receiver's 29.2 mm wide pads do not fit between the giver's fingers; 45 mm: the
+  // receiver's open fingers (50 mm) leave 2.5 mm beside it, less than the checker's margins
+  const double side = GENERATE(0.030, 0.045);
+  INFO("cube side " << side << " m");
   core::World world = core::loadWorldFile(testWorldPath("handoff_too_wide.yaml"));
-  world.objects[0].size = Eigen::Vector3d::Constant(0.030);
-  world.objects[0].X_WO.translation().z() = 0.75 + 0.015;  // on the table
+  world.objects[0].size = Eigen::Vector3d::Constant(side);
+  world.objects[0].X_WO.translation().z() = 0.75 + side / 2;  // on the table
   const core::LoadedWorld loaded = unchecked(std::move(world));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*loaded.world, *loaded.robots, loaded.reach);
   MotionHypergraph graph(loaded, task_space, 7);
@@ -185,10 +188,16 @@ TEST_CASE("a 30 mm cube that must be handed over makes the problem infeasible", 
 }
 
 TEST_CASE("a timeout without any task plan names the transitions that were never sampled", "[planner][dash]") {
-  const core::LoadedWorld world = core::loadWorld(testWorldPath("handoff_too_wide.yaml"));
+  // a 40 mm cube can be handed over, but not at handoff heights out of either arm's reach
+  core::World world = core::loadWorldFile(testWorldPath("handoff_too_wide.yaml"));
+  world.objects[0].size = Eigen::Vector3d::Constant(0.040);
+  world.objects[0].X_WO.translation().z() = 0.75 + 0.020;
+  const core::LoadedWorld loaded = unchecked(std::move(world));
   PlannerSettings settings = testSettings();
   settings.max_rounds = 3;
-  const PlanResult result = solve(world, settings);
+  settings.representation.transitions.handoff_min_height = 1.5;
+  settings.representation.transitions.handoff_max_height = 1.6;
+  const PlanResult result = solve(loaded, settings);
   CHECK(result.status == PlannerStatus::kTimeout);
   CHECK_THAT(result.reason, Contains("no task plan in the representation") &&
                                 Contains("never sampled: handoff cube_0 by r1 to r0"));
