@@ -98,6 +98,12 @@ std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int r
   return std::min(settings.search_expansions, std::max(grown, 2 * unconstrained));
 }
 
+std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode mode, bool constrained, int round,
+                                     std::uint64_t unconstrained) {
+  if (!constrained && mode != QueryMode::kSequential) return settings.search_expansions;
+  return constrainedSearchExpansions(settings, round, unconstrained);
+}
+
 PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget) {
   if (settings.max_rounds < 1) throw std::invalid_argument("planner settings: max_rounds: must be >= 1");
   if (settings.sequential_fallback_rounds < 0) {
@@ -244,9 +250,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       say(std::string("greedy query") + modes[static_cast<int>(mode)] + ", " +
           std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
       SearchBudget query_budget = search_budget;
-      if (graph->numSchedulingConstraints() > 0) {
-        query_budget.max_expansions = constrainedSearchExpansions(settings, round, unconstrained_expansions);
-      }
+      query_budget.max_expansions = greedySearchExpansions(settings, mode, graph->numSchedulingConstraints() > 0, round,
+                                                           unconstrained_expansions);
       HyperpathSearch query(*graph, mode);
       const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
       if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {

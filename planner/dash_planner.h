@@ -30,6 +30,7 @@
 
 #include "core/plan.h"
 #include "core/world_loader.h"
+#include "planner/hyperpath_search.h"
 #include "planner/motion_hypergraph.h"
 
 namespace dashbed::planner {
@@ -42,11 +43,12 @@ struct PlannerSettings {
   std::uint64_t seed = 1;
   int max_rounds = 30;                        ///< representation expansions before giving up
   std::uint64_t search_expansions = 20000;    ///< per hyperpath query
-  /// per greedy query while scheduling constraints are in force in round 1, doubling every
-  /// round up to search_expansions (or twice what the last query without them took, when
-  /// more): a depth-first search they steer into a corner backtracks long, and the next round
-  /// may do without them; but a round that drops them meets the same conflicts again, so each
-  /// round lets the constrained search look further
+  /// per greedy query while scheduling constraints are in force, and per sequential query, in
+  /// round 1, doubling every round up to search_expansions (or twice what the last query
+  /// without constraints took, when more): a depth-first search they (or the robots waiting at
+  /// home of a sequential plan) steer into a corner backtracks long, and the next round may do
+  /// without them; but a round that drops them meets the same conflicts again, so each round
+  /// lets the constrained search look further
   std::uint64_t constrained_search_expansions = 1000;
   int conflict_nodes = 500;                   ///< per conflict resolution
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search
@@ -97,6 +99,12 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 /// (from 1), when the last query without them took `unconstrained` expansions (see
 /// PlannerSettings::constrained_search_expansions).
 std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int round, std::uint64_t unconstrained);
+
+/// Expansion budget of a greedy query in `mode` in round `round`: search_expansions, but
+/// constrainedSearchExpansions for a sequential query and for any query while scheduling
+/// constraints are in force (`constrained`).
+std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode mode, bool constrained, int round,
+                                     std::uint64_t unconstrained);
 
 const char* toString(Method method);
 const char* toString(PlannerStatus status);
