@@ -399,7 +399,8 @@ std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& o
   out << "Seeds 1.." << options.seeds << " (world seed = planner seed), budget per run "
       << core::significantText(options.greedy_budget, 6) << " s for Greedy, "
       << core::significantText(options.optimal_budget, 6) << " s for MM-DaSH, at most " << options.max_rounds
-      << " expansion rounds (a sequential plan waits " << options.fallback_rounds << " for a direct one), "
+      << " expansion rounds (a sequential plan waits " << options.fallback_rounds
+      << (options.fallback_rounds == 1 ? " round" : " rounds") << " for a direct one), "
       << options.jobs << (options.jobs == 1 ? " run" : " runs") << " at a time on "
       << std::thread::hardware_concurrency() << " hardware threads, simulation " << (options.simulate ? "on" : "off")
       << ".\n\n";
