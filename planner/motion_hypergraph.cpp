@@ -202,15 +202,18 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
   Roadmap::MotionFilter clear;
   if (around_homes) {
     if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
-    std::vector<std::pair<int, Eigen::VectorXd>> homes;  // the other robots at home
+    std::vector<StandingRobot> homes;  // the other robots at home
     for (int other = 0; other < scene_->numRobots(); ++other) {
-      if (other != robot) homes.emplace_back(other, homeConfiguration(*world_->world, *scene_, other));
+      if (other != robot) homes.push_back({other, homeConfiguration(*world_->world, *scene_, other), std::nullopt});
     }
-    clear = [this, &map, robot, homes = std::move(homes)](const core::ArmConfig& a, const core::ArmConfig& b) {
-      const Eigen::VectorXd qa = map.fullConfiguration(a), qb = map.fullConfiguration(b);
-      return std::all_of(homes.begin(), homes.end(), [&](const auto& home) {
-        return checker_->motionsFree(robot, qa, qb, map.held(), home.first, home.second, home.second, std::nullopt);
-      });
+    // the homes never move: an answer holds for the roadmap's life
+    std::map<std::pair<core::ArmConfig, core::ArmConfig>, bool>& known = clear_of_homes_[std::make_tuple(robot, object, grasp)];
+    clear = [this, &map, &known, robot, homes = std::move(homes)](const core::ArmConfig& a, const core::ArmConfig& b) {
+      const auto [it, added] = known.try_emplace({a, b}, false);
+      if (added) {
+        it->second = checker_->motionClearOf(robot, map.fullConfiguration(a), map.fullConfiguration(b), map.held(), homes);
+      }
+      return it->second;
     };
   }
   const int a = map.addConfiguration(from), b = map.addConfiguration(to);

@@ -230,6 +230,8 @@ class MotionHypergraph {
   std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
+  // move(..., around_homes)'s answers per roadmap: (a, b) -> the straight motion keeps clear of the homes
+  std::map<std::tuple<int, int, int>, std::map<std::pair<core::ArmConfig, core::ArmConfig>, bool>> clear_of_homes_;
   std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>, bool>, std::unique_ptr<Move>> moves_;  // cache of move() (null: no path)
   std::deque<Move> detours_;  // made by detour()
   std::vector<std::unique_ptr<Move>> retired_moves_;  // moves of earlier rounds (pointers to them stay valid)
