@@ -477,22 +477,25 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         // Samples are checked in order; after a free one, the samples up to which the robots'
         // points together travel less than their clearance there are free as well (each robot
         // moves along one straight piece within the interval), and are skipped.
+        Eigen::VectorXd qa = state_at(a, 0, a0, a1), qb = state_at(b, 0, b0, b1);
         for (int k = 0; k <= steps;) {
           const double t = t0 + (t1 - t0) * k / steps;
-          const Eigen::VectorXd qa = state_at(a, k, a0, a1), qb = state_at(b, k, b0, b1);
           const double clearance = checker.robotsClearance(a, qa, a0.held, b, qb, b0.held);
           if (clearance < 0.0) {
             if (!first || t < first->t) first = RobotConflict{t, a, b, a0.item, b0.item};
             stop(t0);
             break;
           }
-          int next = k + 1;
-          for (; next <= steps; ++next) {
-            const double travel = scene.motionTravel(a, qa, state_at(a, next, a0, a1), a0.held) +
-                                  scene.motionTravel(b, qb, state_at(b, next, b0, b1), b0.held);
-            if (travel + kClearanceSlack >= clearance) break;
+          // the first sample the robots may reach within the clearance becomes the next checked
+          for (++k; k <= steps; ++k) {
+            Eigen::VectorXd na = state_at(a, k, a0, a1), nb = state_at(b, k, b0, b1);
+            const double travel = scene.motionTravel(a, qa, na, a0.held) + scene.motionTravel(b, qb, nb, b0.held);
+            if (travel + kClearanceSlack >= clearance) {
+              qa = std::move(na);
+              qb = std::move(nb);
+              break;
+            }
           }
-          k = next;
         }
         if (first && first->robot_a == a && first->robot_b == b) break;
         standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
