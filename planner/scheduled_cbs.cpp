@@ -486,16 +486,31 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
             stop(t0);
             break;
           }
-          // the first sample the robots may reach within the clearance becomes the next checked
-          for (++k; k <= steps; ++k) {
-            Eigen::VectorXd na = state_at(a, k, a0, a1), nb = state_at(b, k, b0, b1);
+          // The next sample checked is the first the robots may reach within the clearance.
+          // Their travel from sample k grows with the samples after it (each robot moves along
+          // one straight piece), so it is found by doubling the stride, then halving it.
+          Eigen::VectorXd reach_a, reach_b;  // the states at the first sample found to reach
+          const auto reaches = [&](int n) {
+            Eigen::VectorXd na = state_at(a, n, a0, a1), nb = state_at(b, n, b0, b1);
             const double travel = scene.motionTravel(a, qa, na, a0.held) + scene.motionTravel(b, qb, nb, b0.held);
-            if (travel + kClearanceSlack >= clearance) {
-              qa = std::move(na);
-              qb = std::move(nb);
-              break;
-            }
+            if (travel + kClearanceSlack < clearance) return false;
+            reach_a = std::move(na);
+            reach_b = std::move(nb);
+            return true;
+          };
+          int short_of = k, next = k + 1;  // short_of: not reaching (or k); next: the candidate
+          while (next <= steps && !reaches(next)) {
+            short_of = next;
+            next = k + 2 * (next - k);
           }
+          if (next > steps) next = short_of < steps && reaches(steps) ? steps : steps + 1;
+          while (next <= steps && next - short_of > 1) {
+            const int mid = short_of + (next - short_of) / 2;
+            (reaches(mid) ? next : short_of) = mid;
+          }
+          k = next;
+          qa = std::move(reach_a);
+          qb = std::move(reach_b);
         }
         if (first && first->robot_a == a && first->robot_b == b) break;
         standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
