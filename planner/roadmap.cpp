@@ -322,8 +322,10 @@ struct Roadmap::Impl {
   /// The draws come from a generator seeded with the roadmap's seed and the query's nodes.
   void shortcut(std::vector<core::ArmConfig>& path, int from, int to, const SiteSet& occupied,
                 const Roadmap::MotionFilter& clear) {
+    // the filter first: a shortcut's ends are new points, so neither check is cached, and a
+    // shortcut that fails mostly cuts through what the filter keeps clear of (detours)
     const auto free = [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-      return motionUsable(a, b, occupied) && (!clear || clear(a, b));
+      return (!clear || clear(a, b)) && motionUsable(a, b, occupied);
     };
     std::seed_seq seq{static_cast<std::uint32_t>(seed), static_cast<std::uint32_t>(seed >> 32),
                       static_cast<std::uint32_t>(from), static_cast<std::uint32_t>(to)};
