@@ -1387,19 +1387,36 @@ double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a
   capsules_b.reserve(32);
   collect(state.slots[robot_a], groups_a, capsules_a);
   collect(state.slots[robot_b], groups_b, capsules_b);
-  double gap = std::numeric_limits<double>::infinity();
-  for (const auto& x : groups_a) {
-    for (const auto& y : groups_b) {
+  // the group pairs' sphere gaps (pairs of which neither moves: none); the nearest pair is
+  // measured first, so that the gap found prunes the others from the start (a minimum does not
+  // depend on the order)
+  std::vector<double> sphere_gaps(groups_a.size() * groups_b.size(), std::numeric_limits<double>::infinity());
+  std::size_t nearest = 0;
+  for (std::size_t gx = 0; gx < groups_a.size(); ++gx) {
+    for (std::size_t gy = 0; gy < groups_b.size(); ++gy) {
+      const Group& x = groups_a[gx];
+      const Group& y = groups_b[gy];
       if (!x.moves && !y.moves) continue;
-      if ((x.c - y.c).norm() - x.r - y.r >= gap) continue;
-      for (std::size_t i = x.begin; i < x.end; ++i) {
-        const Capsule& u = capsules_a[i];
-        for (std::size_t j = y.begin; j < y.end; ++j) {
-          const Capsule& v = capsules_b[j];
-          gap = std::min(gap, segmentDistance(u.p, u.d, v.p, v.d) - u.r - v.r);
-        }
+      const std::size_t k = gx * groups_b.size() + gy;
+      sphere_gaps[k] = (x.c - y.c).norm() - x.r - y.r;
+      if (sphere_gaps[k] < sphere_gaps[nearest]) nearest = k;
+    }
+  }
+  double gap = std::numeric_limits<double>::infinity();
+  const auto measure = [&](std::size_t k) {
+    const Group& x = groups_a[k / groups_b.size()];
+    const Group& y = groups_b[k % groups_b.size()];
+    for (std::size_t i = x.begin; i < x.end; ++i) {
+      const Capsule& u = capsules_a[i];
+      for (std::size_t j = y.begin; j < y.end; ++j) {
+        const Capsule& v = capsules_b[j];
+        gap = std::min(gap, segmentDistance(u.p, u.d, v.p, v.d) - u.r - v.r);
       }
     }
+  };
+  if (!sphere_gaps.empty() && sphere_gaps[nearest] < gap) measure(nearest);
+  for (std::size_t k = 0; k < sphere_gaps.size(); ++k) {
+    if (k != nearest && sphere_gaps[k] < gap) measure(k);
   }
   return std::max(gap, 0.0);
 }
