@@ -74,7 +74,7 @@ struct BenchOptions {
   int seeds = 10;
   std::vector<std::string> methods{"greedy", "optimal"};
   double greedy_budget = 120.0;  ///< wall-clock budget per greedy run [s] (dashbed plan's default)
-  double optimal_budget = 30.0;  ///< per MM-DaSH run [s]
+  double optimal_budget = 120.0;  ///< per MM-DaSH run [s] (as Greedy's: MM-DaSH starts from Greedy's plan)
   int max_rounds = 30;
   int fallback_rounds = PlannerChoice{}.fallback_rounds;
   bool simulate = true;
