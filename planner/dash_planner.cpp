@@ -289,12 +289,14 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
     }
     if (best_schedule && fallback_round == 0) fallback_round = round;
-    // Next-Best Search: task plans in order of optimistic makespan until no better is possible;
-    // not while a sequential fallback waits for the direct queries of the next rounds (those
-    // run as for Greedy, so that MM-DaSH starts from Greedy's plan)
+    // Next-Best Search: task plans in order of optimistic makespan until no better is possible.
+    // It starts from Greedy's plan as its upper bound: not in a round without one (its lazily
+    // planned moves would grow the representation otherwise than Greedy's next round does, which
+    // then may find a plan Next-Best Search cannot improve on, but Greedy's is better), nor while
+    // a sequential fallback waits for the direct queries of the next rounds
     const bool fallback_done = round >= fallback_round + settings.sequential_fallback_rounds;
-    const bool waiting = best_schedule && !direct_plan() && !fallback_done;
-    for (bool again = settings.method == Method::kOptimal && !waiting; again && !time_up();) {
+    const bool greedy_done = direct_plan() || (best_schedule && fallback_done);
+    for (bool again = settings.method == Method::kOptimal && greedy_done; again && !time_up();) {
       again = false;
       HyperpathSearch search(*graph);
       for (int k = 0; k < settings.next_best_plans && !again && !time_up(); ++k) {
@@ -303,7 +305,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         again = resolve(*next.plan);
       }
     }
-    if (direct_plan() || (best_schedule && fallback_done)) break;
+    if (greedy_done) break;
     if (best_schedule) {
       say("keeping the sequential plan (makespan " + secondsText(best) + ") while looking for a direct one");
       continue;

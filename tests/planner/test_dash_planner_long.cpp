@@ -147,3 +147,32 @@ TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
   REQUIRE(optimal.status == PlannerStatus::kSolved);
   CHECK(optimal.stats.makespan <= greedy.stats.makespan);
 }
+
+TEST_CASE("MM-DaSH runs as greedy until greedy has a plan, and is then never worse", "[planner][dash]") {
+  // with one handoff sample a round, greedy finds no plan in its first rounds; Next-Best Search
+  // waits for one (its upper bound), so that the representation grows as greedy's does
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("shelf_front_slots.yaml"));
+  const auto run = [&](Method method, std::vector<std::string>& log) {
+    PlannerSettings settings = testSettings(method);
+    settings.representation.handoff_samples_per_round = 1;
+    PlannerBudget budget;
+    budget.progress = [&](const std::string& line) { log.push_back(line); };
+    return solve(world, settings, budget);
+  };
+  std::vector<std::string> greedy_log, optimal_log;
+  const PlanResult greedy = run(Method::kGreedy, greedy_log);
+  const PlanResult optimal = run(Method::kOptimal, optimal_log);
+  REQUIRE(greedy.status == PlannerStatus::kSolved);
+  REQUIRE(greedy.stats.rounds > 1);
+  REQUIRE(optimal.status == PlannerStatus::kSolved);
+  CHECK(optimal.stats.rounds == greedy.stats.rounds);
+  CHECK(optimal.stats.makespan <= greedy.stats.makespan);
+  // the same queries and conflict resolutions up to greedy's plan
+  const auto found = std::find_if(greedy_log.begin(), greedy_log.end(), [](const std::string& line) {
+    return line.rfind("conflict resolution: makespan", 0) == 0;
+  });
+  REQUIRE(found != greedy_log.end());
+  const std::vector<std::string> before(greedy_log.begin(), found + 1);
+  REQUIRE(optimal_log.size() >= before.size());
+  CHECK(std::vector<std::string>(optimal_log.begin(), optimal_log.begin() + before.size()) == before);
+}
