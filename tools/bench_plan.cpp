@@ -225,6 +225,7 @@ RunRecord runOnce(const BenchCase& c, std::uint64_t seed, const BenchOptions& op
   record.planning_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   record.construction_seconds = result.stats.construction_seconds;
   record.search_seconds = result.stats.search_seconds + result.stats.conflict_seconds;
+  record.rounds = result.stats.rounds;
   switch (result.status) {
     case planner::PlannerStatus::kSolved:
       record.outcome = RunOutcome::kSolved;
@@ -491,7 +492,7 @@ std::string summaryCsv(const std::vector<BenchRow>& rows) {
 std::string runsCsv(const std::vector<BenchRow>& rows) {
   std::ostringstream out;
   out << "suite,robots,objects,start,method,seed,status,construction_s,search_s,planning_s,planning_cpu_s,makespan_s,"
-         "at_budget,sim,reason\n";
+         "rounds,at_budget,sim,reason\n";
   for (const BenchRow& row : rows) {
     const BenchCase& c = row.scenario;
     for (const RunRecord& r : row.runs) {
@@ -499,7 +500,7 @@ std::string runsCsv(const std::vector<BenchRow>& rows) {
       out << c.suite << "," << c.robots << "," << c.objects << "," << c.start << "," << c.method << "," << r.seed << ","
           << toString(r.outcome) << "," << csvNumber(r.construction_seconds) << "," << csvNumber(r.search_seconds)
           << "," << csvNumber(r.planning_seconds) << "," << csvNumber(r.planning_cpu_seconds) << ","
-          << (solved ? csvNumber(r.makespan) : "") << "," << (r.at_budget ? 1 : 0) << ","
+          << (solved ? csvNumber(r.makespan) : "") << "," << r.rounds << "," << (r.at_budget ? 1 : 0) << ","
           << (r.sim_passed ? (*r.sim_passed ? "passed" : "failed") : "") << ","
           << csvField(solved ? r.sim_failure : r.reason) << "\n";
     }

@@ -90,6 +90,9 @@ render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
     }
     if (!s.dashed) {
       for (const auto& [x, y] : points) fillCircle(image, px(x), py(y), 4.5, s.color);
+    } else if (points.size() == 1) {  // no line to dash: a ring marks the lone point
+      fillCircle(image, px(points[0].first), py(points[0].second), 5.5, s.color);
+      fillCircle(image, px(points[0].first), py(points[0].second), 3.0, {1.0, 1.0, 1.0});
     }
   }
   const int legend_x = x_hi + 20;

@@ -16,7 +16,7 @@ namespace dashbed::tools {
 struct PlotSeries {
   std::string label;  ///< legend entry (ASCII)
   core::Color color;
-  bool dashed = false;                            ///< dashed line without markers (e.g. reference data)
+  bool dashed = false;  ///< dashed line without markers (e.g. reference data); a lone point gets a ring
   std::vector<std::pair<double, double>> points;  ///< (x, y), joined in increasing x
 };
 

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "tools/bench_plan.h"
+#include "tools/bench_plot.h"
 
 namespace dashbed::tools {
 namespace {
@@ -22,6 +23,7 @@ RunRecord solved(std::uint64_t seed, double planning, bool sim_passed) {
   r.planning_seconds = planning;
   r.planning_cpu_seconds = 0.5 * planning;
   r.makespan = 40.0 + static_cast<double>(seed);
+  r.rounds = static_cast<int>(seed) + 1;
   r.sim_passed = sim_passed;
   if (!sim_passed) r.sim_failure = "place cube_1 by r0: tilt 0.3 rad > 0.1 rad";
   return r;
@@ -152,6 +154,10 @@ TEST_CASE("bench plan CSV files read back with one line per row and per run", "[
   const std::vector<std::string> run_columns = csvFields(runs[0]);
   for (const std::string& line : runs) CHECK(csvFields(line).size() == run_columns.size());
   CHECK(csvFields(runs[3])[6] == "timeout");
+  const auto rounds = static_cast<std::size_t>(std::find(run_columns.begin(), run_columns.end(), "rounds") -
+                                               run_columns.begin());
+  REQUIRE(rounds < run_columns.size());
+  CHECK(csvFields(runs[2])[rounds] == std::to_string(rows[0].runs[1].rounds));
   CHECK(csvFields(runs[3]).back() == "time budget, round 3");  // quoted: holds a comma
   CHECK(csvFields(runs[6]).back() == "no grasp of \"b0\"");
   CHECK(csvFields(runs[2]).back() == "place cube_1 by r0: tilt 0.3 rad > 0.1 rad");
@@ -178,6 +184,23 @@ TEST_CASE("bench plan rows follow the paper's order and its table", "[bench_plan
 
   options.methods = {"astar"};
   CHECK_THROWS_AS(benchCases(options), std::invalid_argument);
+}
+
+TEST_CASE("a plot marks a dashed series of a single point, which has no line to dash", "[bench_plan]") {
+  LinePlot plot;
+  plot.log_y = true;
+  plot.series.push_back({"ours", {0.0, 0.0, 1.0}, false, {{4, 0.5}, {8, 2.0}}});
+  plot.series.push_back({"paper, one row", {1.0, 0.0, 0.0}, true, {{4, 40.0}}});
+  const render::Image image = drawLinePlot(plot, 800, 400);
+  // red pixels left of the legend (the right 360 px): only the marker can make them
+  int red = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width - 360; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      red += p[0] > 200 && p[1] < 60 && p[2] < 60 ? 1 : 0;
+    }
+  }
+  CHECK(red > 20);
 }
 
 }  // namespace
