@@ -35,7 +35,9 @@ Pose makePoseXyzYaw(const Eigen::Vector3d& xyz, double yaw) {
 
 double wrapToPi(double angle) {
   constexpr double kTwoPi = 2.0 * std::numbers::pi;
-  double a = std::fmod(angle, kTwoPi);
+  // fmod returns an angle within (-2 pi, 2 pi) exactly as it is: no call needed (the IK and
+  // the planner's angle comparisons wrap millions of such angles)
+  double a = std::abs(angle) < kTwoPi ? angle : std::fmod(angle, kTwoPi);
   if (a <= -std::numbers::pi) a += kTwoPi;
   if (a > std::numbers::pi) a -= kTwoPi;
   return a;

@@ -1,10 +1,12 @@
 #include "core/ur_ik.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <numbers>
 #include <stdexcept>
 #include <string>
+#include <utility>
 
 #include "core/kinematics.h"
 
@@ -45,6 +47,7 @@ Pose urForwardKinematics(const UrDhParameters& dh, const ArmConfig& q) {
 
 std::vector<ArmConfig> urInverseKinematics(const UrDhParameters& dh, const Pose& T_06) {
   std::vector<ArmConfig> solutions;
+  solutions.reserve(8);
   const Eigen::Matrix3d& R = T_06.linear();
   const Eigen::Vector3d p = T_06.translation();
   const Eigen::Vector3d n = R.col(0), o = R.col(1), a = R.col(2);
@@ -145,13 +148,15 @@ bool UrArmIk::wrapIntoLimits(int joint, double target, double& angle) const {
 
 std::vector<ArmConfig> UrArmIk::solve(const Pose& X_RT) const {
   const Pose T_06 = X_RBase_.inverse() * X_RT * X_Tool0T_.inverse();
-  std::vector<ArmConfig> within;
-  for (ArmConfig q : urInverseKinematics(dh_, T_06)) {
+  std::vector<ArmConfig> solutions = urInverseKinematics(dh_, T_06);
+  std::size_t kept = 0;  // those within the limits, in order
+  for (ArmConfig& q : solutions) {
     bool ok = true;
     for (int i = 0; i < 6 && ok; ++i) ok = wrapIntoLimits(i, 0.0, q[i]);
-    if (ok) within.push_back(q);
+    if (ok) solutions[kept++] = q;
   }
-  return within;
+  solutions.resize(kept);
+  return solutions;
 }
 
 std::vector<ArmConfig> UrArmIk::solveNearest(const Pose& X_RT, const ArmConfig& seed) const {
@@ -159,14 +164,18 @@ std::vector<ArmConfig> UrArmIk::solveNearest(const Pose& X_RT, const ArmConfig& 
   for (ArmConfig& q : solutions) {
     for (int i = 0; i < 6; ++i) wrapIntoLimits(i, seed[i], q[i]);
   }
-  const auto distance = [&](const ArmConfig& q) {
+  // insertion by squared distance (at most 8 solutions), each distance computed once; stable:
+  // equal distances keep the analytic order, so results are deterministic
+  std::array<std::pair<double, ArmConfig>, 8> by_distance;  // 2 pans x 2 wrists x 2 elbows at most
+  std::size_t n = 0;
+  for (const ArmConfig& q : solutions) {
     double sum = 0.0;
     for (int i = 0; i < 6; ++i) sum += (q[i] - seed[i]) * (q[i] - seed[i]);
-    return sum;
-  };
-  // stable: equal distances keep the analytic order, so results are deterministic
-  std::stable_sort(solutions.begin(), solutions.end(),
-                   [&](const ArmConfig& x, const ArmConfig& y) { return distance(x) < distance(y); });
+    std::size_t at = n++;
+    for (; at > 0 && by_distance[at - 1].first > sum; --at) by_distance[at] = by_distance[at - 1];
+    by_distance[at] = {sum, q};
+  }
+  for (std::size_t k = 0; k < n; ++k) solutions[k] = by_distance[k].second;
   return solutions;
 }
 
