@@ -10,11 +10,12 @@
 //
 //  Method::kGreedy   Greedy-MM-DaSH: one greedy hyperpath query per round; the first plan whose
 //                    conflicts resolve is returned (earlyTermination from the start).
-//  Method::kOptimal  MM-DaSH: Next-Best Search (Alg. 5) with the A*-like hyperpath query on the
-//                    current representation, starting from the greedy plan as the upper bound
-//                    (so it is never worse), until the next task plan's optimistic makespan is
-//                    no better than the best resolved plan. With a deadline it is anytime: the
-//                    best plan so far is returned when time is up.
+//  Method::kOptimal  MM-DaSH: Greedy's rounds until they have a plan, then Next-Best Search
+//                    (Alg. 5) with the A*-like hyperpath query on that round's representation,
+//                    starting from the greedy plan as the upper bound (so it is never worse),
+//                    until the next task plan's optimistic makespan is no better than the best
+//                    resolved plan. With a deadline it is anytime: the best plan so far is
+//                    returned when time is up.
 //
 // One entry point, solve(); infeasible problems and timeouts are statuses, not exceptions. The
 // one world error only the collision model can see, a robot colliding at home, throws
