@@ -7,6 +7,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <vector>
 
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
