@@ -1160,6 +1160,11 @@ const CollisionSettings& CollisionScene::settings() const { return data_->settin
 int CollisionScene::numRobots() const { return static_cast<int>(data_->robots.size()); }
 int CollisionScene::numObjects() const { return static_cast<int>(data_->objects.size()); }
 int CollisionScene::numPositions(int robot) const { return requireRobot(*data_, robot).num_positions; }
+Eigen::VectorXd CollisionScene::configuration(int robot, const core::ArmConfig& q, double finger) const {
+  Eigen::VectorXd x = Eigen::VectorXd::Constant(numPositions(robot), finger);
+  for (std::size_t j = 0; j < q.size(); ++j) x[static_cast<Eigen::Index>(j)] = q[j];
+  return x;
+}
 const std::vector<core::Box>& CollisionScene::staticBoxes() const { return data_->statics.boxes; }
 
 namespace {

@@ -148,6 +148,8 @@ class CollisionScene {
   int numObjects() const;
   /// Number of configuration entries of a robot (arm joints then fingers).
   int numPositions(int robot) const;
+  /// The configuration the checks take: the arm at `q`, every finger at `finger` [m].
+  Eigen::VectorXd configuration(int robot, const core::ArmConfig& q, double finger) const;
 
   /// The static boxes in W: every fixture's boxes, then the floor (last).
   const std::vector<core::Box>& staticBoxes() const;

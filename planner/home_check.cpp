@@ -7,10 +7,7 @@
 namespace dashbed::planner {
 
 Eigen::VectorXd homeConfiguration(const core::World& world, const CollisionScene& scene, int robot) {
-  Eigen::VectorXd q = Eigen::VectorXd::Constant(scene.numPositions(robot), kFingersOpen);
-  const core::ArmConfig& home = world.robots.at(static_cast<std::size_t>(robot)).home;
-  for (int j = 0; j < 6; ++j) q[j] = home[static_cast<std::size_t>(j)];
-  return q;
+  return scene.configuration(robot, world.robots.at(static_cast<std::size_t>(robot)).home, kFingersOpen);
 }
 
 void requireFreeHomes(const core::World& world, const CollisionScene& scene) {

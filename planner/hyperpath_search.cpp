@@ -242,13 +242,24 @@ bool HyperpathSearch::placeBlocked(const TransitionHistory& history, int robot, 
   const SiteSet filled = history.filledGoals(graph_->sites().numSites());
   const std::vector<int>& ids = graph_->transitionsOf(place, grasp);
   return std::all_of(ids.begin(), ids.end(), [&](int id) {
-    return graph_->transition(id).sample.touches.intersects(filled) || knownUnusable(id);
+    return graph_->transition(id).sample.touches.intersects(filled) || knownUnusable(id) || blockedByIdleRobots(id);
   });
+}
+
+bool HyperpathSearch::blockedByIdleRobots(int transition) const {
+  if (mode_ != QueryMode::kSequential) return false;
+  const std::vector<TransitionMotion>& motions = graph_->transition(transition).sample.motions;
+  for (int r = 0; r < graph_->scene().numRobots(); ++r) {
+    const bool idle = std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) { return m.robot == r; });
+    if (idle && !graph_->clearOfHome(transition, r)) return true;
+  }
+  return false;
 }
 
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
   const auto& robots = graph_->world().world->robots;
   const std::vector<TransitionMotion>& motions = graph_->transition(transition).sample.motions;
+  if (history.sequential && blockedByIdleRobots(transition)) return true;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     // a robot that has not acted yet stands at home; in a sequential history, every robot the
     // transition does not need waits there
@@ -382,7 +393,10 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   const auto available = [&](std::size_t h, int grasp) {
     const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
     return std::any_of(ids.begin(), ids.end(),
-                       [&](int id) { return !graph_->transition(id).sample.touches.intersects(placed) && !knownUnusable(id); });
+                       [&](int id) {
+                         return !graph_->transition(id).sample.touches.intersects(placed) && !knownUnusable(id) &&
+                                !blockedByIdleRobots(id);
+                       });
   };
   std::vector<bool> progresses(n, false);
   for (bool changed = true; changed;) {

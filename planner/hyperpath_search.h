@@ -112,6 +112,9 @@ class HyperpathSearch {
   /// A scheduling constraint keeps `transition` out of the history: the history holds a
   /// transition paired with it, or a robot it must wait for still stands at home.
   bool excluded(const TransitionHistory& history, int transition) const;
+  /// In this query's sequential mode: the motions of `transition` run into a robot it does not
+  /// need, standing at home as it does while the transition runs (MotionHypergraph::clearOfHome).
+  bool blockedByIdleRobots(int transition) const;
   bool deadlocked(const TransitionHistory& history) const;
   /// The handoff hyperarc `arc` may take the object from its giver: towards the goal (by the
   /// cost to go), or away from it out of a hand that cannot place it (placeBlocked) to a robot

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <random>
+#include <span>
 #include <stdexcept>
 #include <string>
 
@@ -331,6 +332,21 @@ bool MotionHypergraph::homeConflict(int transition_id, int robot) const {
   if (home_constraints_.empty()) return false;
   return home_constraints_.contains({transition_id, robot}) ||
          hyperarc_home_constraints_.contains({transition(transition_id).sample.hyperarc, robot});
+}
+
+bool MotionHypergraph::clearOfHome(int transition_id, int robot) {
+  const auto [it, added] = clear_of_home_.try_emplace({transition_id, robot}, true);
+  if (!added) return it->second;
+  if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
+  const StandingRobot home{robot, homeConfiguration(*world_->world, *scene_, robot), std::nullopt};
+  for (const TransitionMotion& motion : transition(transition_id).sample.motions) {
+    for (std::size_t i = 0; i + 1 < motion.keys.size() && it->second; ++i) {
+      it->second = checker_->motionClearOf(motion.robot, scene_->configuration(motion.robot, motion.keys[i].q, motion.finger[i]),
+                                           scene_->configuration(motion.robot, motion.keys[i + 1].q, motion.finger[i]),
+                                           motion.held[i], std::span(&home, 1));
+    }
+  }
+  return it->second;
 }
 
 void MotionHypergraph::clearSchedulingConstraints() {

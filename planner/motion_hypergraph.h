@@ -159,6 +159,10 @@ class MotionHypergraph {
   /// hyperarc on a second sample, as above. Returns false when known already.
   bool addHomeConstraint(int transition, int robot);
   bool homeConflict(int transition, int robot) const;
+  /// True when every motion of `transition` keeps clear of `robot` standing at its home
+  /// configuration with its gripper open, where a sequential plan's idle robots wait. A
+  /// geometric check (unlike homeConflict), made once per pair.
+  bool clearOfHome(int transition, int robot);
   std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size() + home_constraints_.size(); }
   void clearSchedulingConstraints();  ///< all of them
 
@@ -216,7 +220,7 @@ class MotionHypergraph {
   std::uint64_t seed_;
   RepresentationSettings settings_;
   std::unique_ptr<CollisionScene> scene_;
-  std::unique_ptr<CollisionChecker> checker_;  // for move(..., around_homes)
+  std::unique_ptr<CollisionChecker> checker_;  // for move(..., around_homes) and clearOfHome
   ObjectSites sites_;
   std::unique_ptr<TransitionSampler> sampler_;
   TimingLimits timing_;
@@ -241,6 +245,7 @@ class MotionHypergraph {
   std::set<std::pair<int, int>> home_constraints_;                // (transition, robot)
   std::map<std::pair<int, int>, int> hyperarc_home_counts_;       // (task-space hyperarc, robot) -> samples
   std::set<std::pair<int, int>> hyperarc_home_constraints_;       // those with two or more
+  std::map<std::pair<int, int>, bool> clear_of_home_;             // (transition, robot) -> clearOfHome
   std::vector<int> source_, target_;
 };
 

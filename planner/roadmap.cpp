@@ -171,11 +171,7 @@ struct Roadmap::Impl {
     return t;
   }
 
-  Eigen::VectorXd full(const core::ArmConfig& q) const {
-    Eigen::VectorXd x = Eigen::VectorXd::Constant(scene->numPositions(robot), finger);
-    for (int j = 0; j < 6; ++j) x[j] = q[j];
-    return x;
-  }
+  Eigen::VectorXd full(const core::ArmConfig& q) const { return scene->configuration(robot, q, finger); }
 
   bool configurationFree(const core::ArmConfig& q) { return checker.robotFree(robot, full(q), {}, held); }
 

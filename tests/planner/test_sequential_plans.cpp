@@ -9,6 +9,7 @@
 
 #include "core/world_loader.h"
 #include "core/plan.h"
+#include "planner/home_check.h"
 #include "planner/hyperpath_search.h"
 #include "planner/plan_writer.h"
 #include "planner/scheduled_cbs.h"
@@ -50,6 +51,23 @@ std::pair<TransitionHistory, Schedule> resolvedSequential(Graph& g) {
   const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, conflictBudget());
   REQUIRE(resolved.status == ConflictStatus::kResolved);
   return {*found.plan, *resolved.schedule};
+}
+
+/// Whether transition `id` runs into `idle` standing at home with its gripper open, checked
+/// on 50 configurations per straight piece of every motion.
+bool hitsHome(Graph& g, CollisionChecker& checker, int id, int idle) {
+  const Eigen::VectorXd home = homeConfiguration(*g.world.world, g.graph.scene(), idle);
+  for (const TransitionMotion& m : g.graph.transition(id).sample.motions) {
+    for (std::size_t i = 0; i + 1 < m.keys.size(); ++i) {
+      for (int k = 0; k <= 50; ++k) {
+        core::ArmConfig q;
+        for (std::size_t j = 0; j < q.size(); ++j) q[j] = m.keys[i].q[j] + (m.keys[i + 1].q[j] - m.keys[i].q[j]) * k / 50.0;
+        const Eigen::VectorXd x = g.graph.scene().configuration(m.robot, q, m.finger[i]);
+        if (!checker.robotsFree(m.robot, x, m.held[i], idle, home, std::nullopt)) return true;
+      }
+    }
+  }
+  return false;
 }
 
 }  // namespace
@@ -118,4 +136,42 @@ TEST_CASE("a plan kept as a fallback is written out the same after the represent
   g.graph.expand();
   CHECK(g.graph.numMoves() == moves);  // the old moves retired, none planned yet
   CHECK(core::writePlanJson(writePlan(g.graph, history, schedule)) == before);
+}
+
+TEST_CASE("a transition is clear of a robot at home unless its motions run into it", "[planner][dash]") {
+  // the cube lies right under r0's gripper at home: r1's picks run into it
+  Graph g(testWorldPath("idle_home_block.yaml"));
+  CollisionChecker checker(g.graph.scene());
+  int blocked = 0, clear = 0;
+  for (std::size_t h = 0; h < g.task_space.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = g.task_space.hyperarcs()[h];
+    if (arc.kind != TransitionKind::kPick) continue;
+    const int idle = 1 - arc.robot;
+    for (const int id : g.graph.transitionsOf(static_cast<int>(h), -1)) {
+      const bool hits = hitsHome(g, checker, id, idle);
+      INFO("pick " << id << " by r" << arc.robot);
+      if (hits) CHECK_FALSE(g.graph.clearOfHome(id, idle));
+      (g.graph.clearOfHome(id, idle) ? clear : blocked) += 1;
+    }
+  }
+  CHECK(blocked > 0);
+  CHECK(clear > 0);
+}
+
+TEST_CASE("a sequential task plan keeps every step clear of the robots waiting at home", "[planner][dash]") {
+  // only r1 reaches the bin, and its picks run into r0 at home: r0 picks and hands over
+  Graph g(testWorldPath("idle_home_block.yaml"));
+  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const TransitionHistory& history = *found.plan;
+  REQUIRE_FALSE(history.steps.empty());
+  CHECK(g.graph.transition(history.steps.front().transition).sample.motions.front().robot == 0);
+  CollisionChecker checker(g.graph.scene());
+  for (const ScheduledTransition& step : history.steps) {
+    const std::vector<int> busy = robotsOf(g.graph, step);
+    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
+      INFO("transition " << step.transition << ", r" << idle << " at home");
+      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
+    }
+  }
 }
