@@ -259,7 +259,7 @@ bool HyperpathSearch::blockedByIdleRobots(int transition) const {
 bool HyperpathSearch::excluded(const TransitionHistory& history, int transition) const {
   const auto& robots = graph_->world().world->robots;
   const std::vector<TransitionMotion>& motions = graph_->transition(transition).sample.motions;
-  if (history.sequential && blockedByIdleRobots(transition)) return true;
+  if (blockedByIdleRobots(transition)) return true;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     // a robot that has not acted yet stands at home; in a sequential history, every robot the
     // transition does not need waits there
