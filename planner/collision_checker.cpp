@@ -444,6 +444,7 @@ struct CheckerState {
   Solver solver;
   std::vector<Slot> slots;  // one per robot
   std::vector<Slot> standing;  // the other robots of a motionClearOf query
+  std::vector<char> known_free;  // [sample] of a motionClearOf query: found free already
   std::vector<const AabbNode*> stack;
   std::vector<int> order;  // bisection order of sample indices for `order_n` intervals
   int order_n = -1;
@@ -1347,14 +1348,15 @@ double segmentDistance(const Vector3d& p1, const Vector3d& d1, const Vector3d& p
   return (p1 + s * d1 - (p2 + t * d2)).norm();
 }
 
-}  // namespace
+// A sample skipped by its clearance (motionClearOf) keeps this much of it in hand [m]: rounding.
+constexpr double kClearanceSlack = 1e-4;
 
-double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a,
-                                         const std::optional<HeldObject>& held_a, int robot_b,
-                                         const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b) {
-  if (!robotsFree(robot_a, q_a, held_a, robot_b, q_b, held_b)) return -1.0;
-  const detail::SceneData& scene = *scene_->data_;
-  auto& state = *state_;
+/// robotsClearance of two evaluated slots, at most `cap` [m] (pairs of capsule groups no nearer
+/// than that are not measured): -1 when they collide.
+double slotsClearance(detail::CheckerState& state, detail::CheckerState::Slot& slot_a,
+                      detail::CheckerState::Slot& slot_b, double cap) {
+  if (state.interRobotCollision(slot_a, slot_b)) return -1.0;
+  const detail::SceneData& scene = *state.scene;
   // Per robot, groups of capsules holding its shapes: one per body with shapes (with the
   // body's bounding sphere, to skip groups that cannot come closer than the best so far), and
   // one for the held object.
@@ -1390,8 +1392,8 @@ double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a
   groups_b.reserve(16);
   capsules_a.reserve(32);
   capsules_b.reserve(32);
-  collect(state.slots[robot_a], groups_a, capsules_a);
-  collect(state.slots[robot_b], groups_b, capsules_b);
+  collect(slot_a, groups_a, capsules_a);
+  collect(slot_b, groups_b, capsules_b);
   // the group pairs' sphere gaps (pairs of which neither moves: none); the nearest pair is
   // measured first, so that the gap found prunes the others from the start (a minimum does not
   // depend on the order)
@@ -1407,7 +1409,7 @@ double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a
       if (sphere_gaps[k] < sphere_gaps[nearest]) nearest = k;
     }
   }
-  double gap = std::numeric_limits<double>::infinity();
+  double gap = cap;
   const auto measure = [&](std::size_t k) {
     const Group& x = groups_a[k / groups_b.size()];
     const Group& y = groups_b[k % groups_b.size()];
@@ -1424,6 +1426,16 @@ double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a
     if (k != nearest && sphere_gaps[k] < gap) measure(k);
   }
   return std::max(gap, 0.0);
+}
+
+}  // namespace
+
+double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a,
+                                         const std::optional<HeldObject>& held_a, int robot_b,
+                                         const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b) {
+  if (!robotsFree(robot_a, q_a, held_a, robot_b, q_b, held_b)) return -1.0;
+  return slotsClearance(*state_, state_->slots[robot_a], state_->slots[robot_b],
+                        std::numeric_limits<double>::infinity());
 }
 
 bool CollisionChecker::motionFree(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
@@ -1547,11 +1559,29 @@ bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, c
     requireHeld(scene, other.held);
     state.forward(state.standing[k], data_other, other.q, other.held);
   }
+  // motionsFree's samples in its order, except that after a free sample the samples to which
+  // the robot's points travel less than its clearance from every standing robot are free as
+  // well (robotsClearance) and are not evaluated: the same answer, most samples skipped
+  const double step_travel = scene_->motionTravel(robot, q_from, q_to, held) / n;
+  std::vector<char>& known_free = state.known_free;
+  known_free.assign(static_cast<std::size_t>(n) + 1, 0);
   auto& slot = state.slots[robot];
-  return !state.sweep(slot, data, q_from, q_to, held, n, [&](double) {
-    return std::any_of(state.standing.begin(), state.standing.end(),
-                       [&](auto& other) { return state.interRobotCollision(slot, other); });
-  });
+  state.q_a.resize(q_from.size());
+  for (const int i : state.bisectionOrder(n)) {
+    if (known_free[i]) continue;
+    state.q_a.noalias() = q_from + (static_cast<double>(i) / n) * (q_to - q_from);
+    state.forward(slot, data, state.q_a, held);
+    double clearance = std::numeric_limits<double>::infinity();
+    for (auto& other : state.standing) {
+      clearance = slotsClearance(state, slot, other, clearance);
+      if (clearance < 0.0) return false;
+    }
+    // samples j with |j - i| * step_travel + slack < clearance
+    const double reach = std::ceil((clearance - kClearanceSlack) / std::max(step_travel, 1e-12)) - 1.0;
+    const int r = static_cast<int>(std::clamp(reach, 0.0, static_cast<double>(n)));
+    std::fill(known_free.begin() + std::max(0, i - r), known_free.begin() + std::min(n, i + r) + 1, 1);
+  }
+  return true;
 }
 
 namespace {

@@ -440,6 +440,27 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
       grid.erase(std::unique(grid.begin(), grid.end()), grid.end());
       // both robots standing as they stood in the last interval checked: nothing new to check
       std::optional<std::pair<RobotState, RobotState>> standing;
+      // the last sample whose clearance was measured: robots that together travel less than it
+      // from there (holding the same) are free
+      struct Measured {
+        Eigen::VectorXd qa, qb;
+        std::optional<HeldObject> held_a, held_b;
+        double clearance = -1.0;
+      } measured;
+      // the interval's pieces lie within the clearance of `measured` (each robot moves along
+      // one straight piece, and the travel from a point, a weighted sum of |dq|, is largest at
+      // one of the piece's ends)
+      const auto within_measured = [&](const RobotState& a0, const RobotState& a1, const RobotState& b0,
+                                       const RobotState& b1) {
+        if (measured.clearance <= 0.0 || !sameHeld(measured.held_a, a0.held) || !sameHeld(measured.held_b, b0.held)) {
+          return false;
+        }
+        const auto travel = [&](int r, const Eigen::VectorXd& q, const RobotState& s0, const RobotState& s1) {
+          return std::max(scene.motionTravel(r, q, view.full({s0.q, s0.finger, s0.held, 0}), s0.held),
+                          scene.motionTravel(r, q, view.full({s1.q, s0.finger, s0.held, 0}), s0.held));
+        };
+        return travel(a, measured.qa, a0, a1) + travel(b, measured.qb, b0, b1) + kClearanceSlack < measured.clearance;
+      };
       for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
         const double t0 = toSeconds(grid[i]), t1 = toSeconds(grid[i + 1]);
         if (first && t0 > first->t) {
@@ -459,6 +480,10 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         const RobotState a1 = view.at(a, t1, false), b1 = view.at(b, t1, false);
         const bool still = sameState(a0, a1) && sameState(b0, b1);
         if (still && standing && sameState(a0, standing->first) && sameState(b0, standing->second)) continue;
+        if (within_measured(a0, a1, b0, b1)) {
+          standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
+          continue;
+        }
         const int steps_a = scene.motionSteps(a, view.full(a0), view.full(a1), a0.held);
         const int steps_b = scene.motionSteps(b, view.full(b0), view.full(b1), b0.held);
         // no point moves farther than its steps' motion_step within the interval: robots whose
@@ -486,6 +511,7 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
             stop(t0);
             break;
           }
+          measured = {qa, qb, a0.held, b0.held, clearance};
           // The next sample checked is the first the robots may reach within the clearance.
           // Their travel from sample k grows with the samples after it (each robot moves along
           // one straight piece), so it is found by doubling the stride, then halving it.

@@ -27,7 +27,9 @@
 // robot (held object included) moves more than the collision scene's motion_step between two
 // checks, so the margin covers the motion in between (times of every segment and key, plus a
 // 20 ms grid, each interval split by CollisionScene::motionSteps with 1.5x headroom for the
-// speed varying within it). At the earliest conflict, between item A of robot a and item B of
+// speed varying within it). Samples, and whole intervals, within the clearance of the last
+// sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. At the
+// earliest conflict, between item A of robot a and item B of
 // robot b (an item is a segment, or the robot standing still between two segments), the node
 // branches into "A ends before B starts" and "B ends before A starts" — each a precedence
 // (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. When

@@ -493,6 +493,31 @@ TEST_CASE("robotsClearance: the robots stay free while they travel less than it"
   CHECK(positive > 100);
 }
 
+TEST_CASE("motionClearOf, which skips samples within its clearance, agrees with motionsFree on random motions",
+          "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  CollisionChecker dut(sortingScene());
+  CollisionChecker check(sortingScene());
+  RandomQueries random(11);
+  int clear = 0, blocked = 0, mismatches = 0;
+  for (int i = 0; i < 400; ++i) {
+    const VectorXd from = random.towardsCentre((*loaded.robots)[0]);
+    const VectorXd to = random.towardsCentre((*loaded.robots)[0]);
+    const auto held = random.held(world, 0.4);
+    std::vector<planner::StandingRobot> others;
+    for (int k = 0; k < 3; ++k) others.push_back({1, random.towardsCentre((*loaded.robots)[1]), random.held(world, 0.3)});
+    const bool expected = std::all_of(others.begin(), others.end(), [&](const planner::StandingRobot& o) {
+      return check.motionsFree(0, from, to, held, o.robot, o.q, o.q, o.held);
+    });
+    if (dut.motionClearOf(0, from, to, held, others) != expected) ++mismatches;
+    ++(expected ? clear : blocked);
+  }
+  CHECK(mismatches == 0);
+  CHECK(clear > 40);
+  CHECK(blocked > 40);
+}
+
 TEST_CASE("motionObjectHits names the objects motionFree finds in the way", "[planner][collision]") {
   const auto& loaded = sortingWorld();
   const core::World& world = *loaded.world;
