@@ -698,6 +698,12 @@ struct CheckerState {
     }
   }
 
+  /// The distance between the bounds (updateBounds) of two slots: no point of either robot's
+  /// body spheres (and held object) is nearer the other's.
+  static double boundsGap(const Slot& a, const Slot& b) {
+    return (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0).norm();
+  }
+
   /// Robot against robot. Both slots hold evaluated configurations.
   bool interRobotCollision(Slot& A, Slot& B) {
     const ObjectData* held_a = A.holding ? &scene->objects[A.held_object] : nullptr;
@@ -1350,12 +1356,13 @@ double segmentDistance(const Vector3d& p1, const Vector3d& d1, const Vector3d& p
 
 // A sample skipped by its clearance (motionClearOf) keeps this much of it in hand [m]: rounding.
 constexpr double kClearanceSlack = 1e-4;
+// motionClearOf measures robotsClearance while it skips at least this many samples
+constexpr double kWorthMeasuring = 8.0;
 
-/// robotsClearance of two evaluated slots, at most `cap` [m] (pairs of capsule groups no nearer
-/// than that are not measured): -1 when they collide.
+/// robotsClearance of two evaluated slots found free, at most `cap` [m] (pairs of capsule groups
+/// no nearer than that are not measured).
 double slotsClearance(detail::CheckerState& state, detail::CheckerState::Slot& slot_a,
                       detail::CheckerState::Slot& slot_b, double cap) {
-  if (state.interRobotCollision(slot_a, slot_b)) return -1.0;
   const detail::SceneData& scene = *state.scene;
   // Per robot, groups of capsules holding its shapes: one per body with shapes (with the
   // body's bounding sphere, to skip groups that cannot come closer than the best so far), and
@@ -1561,21 +1568,33 @@ bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, c
   }
   // motionsFree's samples in its order, except that after a free sample the samples to which
   // the robot's points travel less than its clearance from every standing robot are free as
-  // well (robotsClearance) and are not evaluated: the same answer, most samples skipped
+  // well and are not evaluated: the same answer, most samples skipped. The clearance: the gaps
+  // between the robots' bounds, then robotsClearance of those whose bounds overlap (while the
+  // clearance so far would still skip a sample, and until one skips too few to pay for itself)
   const double step_travel = scene_->motionTravel(robot, q_from, q_to, held) / n;
   std::vector<char>& known_free = state.known_free;
   known_free.assign(static_cast<std::size_t>(n) + 1, 0);
   auto& slot = state.slots[robot];
   state.q_a.resize(q_from.size());
+  bool measure = true;
   for (const int i : state.bisectionOrder(n)) {
     if (known_free[i]) continue;
     state.q_a.noalias() = q_from + (static_cast<double>(i) / n) * (q_to - q_from);
     state.forward(slot, data, state.q_a, held);
     double clearance = std::numeric_limits<double>::infinity();
     for (auto& other : state.standing) {
-      clearance = slotsClearance(state, slot, other, clearance);
-      if (clearance < 0.0) return false;
+      if (state.interRobotCollision(slot, other)) return false;
+      const double gap = detail::CheckerState::boundsGap(slot, other);
+      if (gap > 0.0) clearance = std::min(clearance, gap);
     }
+    for (auto& other : state.standing) {
+      if (clearance < step_travel + kClearanceSlack) break;  // skips nothing
+      if (detail::CheckerState::boundsGap(slot, other) > 0.0) continue;
+      clearance = measure ? slotsClearance(state, slot, other, clearance) : 0.0;
+    }
+    // robotsClearance costs more than the checks of the few samples it skips near the others:
+    // measured no more in this motion
+    if (measure && clearance < kWorthMeasuring * step_travel) measure = false;
     // samples j with |j - i| * step_travel + slack < clearance
     const double reach = std::ceil((clearance - kClearanceSlack) / std::max(step_travel, 1e-12)) - 1.0;
     const int r = static_cast<int>(std::clamp(reach, 0.0, static_cast<double>(n)));

@@ -248,7 +248,8 @@ class CollisionChecker {
 
   /// motionsFree of one robot's motion against each of `others` standing still, in one pass
   /// over the motion's samples (each evaluated once for all of them); samples within the
-  /// clearance (robotsClearance) of one found free are not evaluated. True when free of all.
+  /// clearance of one found free (the gap between the robots' bounds, or robotsClearance) are
+  /// not evaluated. True when free of all.
   bool motionClearOf(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                      const std::optional<HeldObject>& held, std::span<const StandingRobot> others);
 

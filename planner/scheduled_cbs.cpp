@@ -33,14 +33,6 @@ bool sameHeld(const std::optional<HeldObject>& x, const std::optional<HeldObject
   return x.has_value() == y.has_value() && (!x || (x->object == y->object && x->X_TO.isApprox(y->X_TO, 0.0)));
 }
 
-/// The full configuration the collision checker wants: arm, then both fingers at `finger`.
-Eigen::VectorXd fullConfiguration(const core::ArmConfig& q, double finger) {
-  Eigen::VectorXd f(8);
-  for (int j = 0; j < 6; ++j) f[j] = q[j];
-  f[6] = f[7] = finger;
-  return f;
-}
-
 /// A scheduling constraint of the high level: a point of segment `from` (its start, or its end)
 /// comes no later than a point of segment `to`. Kept symbolic, as detours change durations.
 struct Precedence {
@@ -157,7 +149,10 @@ class ScheduleView {
     return state;
   }
 
-  static Eigen::VectorXd full(const RobotState& state) { return fullConfiguration(state.q, state.finger); }
+  /// The configuration the collision checker wants for `robot` in `state`.
+  Eigen::VectorXd full(int robot, const RobotState& state) const {
+    return graph_->scene().configuration(robot, state.q, state.finger);
+  }
 
  private:
   void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
@@ -354,7 +349,7 @@ std::vector<Obstacle> obstaclesDuring(const ScheduleView& view, const Schedule& 
   std::vector<Obstacle> states;
   for (Millis t = t0;; t = std::min(t + kObstacleStep, t1)) {
     const RobotState state = view.at(other, toSeconds(t), true);
-    Obstacle o{other, view.full(state), state.held};
+    Obstacle o{other, view.full(other, state), state.held};
     if (!listed(states, o)) states.push_back(std::move(o));
     if (t == t1) break;
   }
@@ -456,8 +451,8 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
           return false;
         }
         const auto travel = [&](int r, const Eigen::VectorXd& q, const RobotState& s0, const RobotState& s1) {
-          return std::max(scene.motionTravel(r, q, view.full({s0.q, s0.finger, s0.held, 0}), s0.held),
-                          scene.motionTravel(r, q, view.full({s1.q, s0.finger, s0.held, 0}), s0.held));
+          return std::max(scene.motionTravel(r, q, view.full(r, {s0.q, s0.finger, s0.held, 0}), s0.held),
+                          scene.motionTravel(r, q, view.full(r, {s1.q, s0.finger, s0.held, 0}), s0.held));
         };
         return travel(a, measured.qa, a0, a1) + travel(b, measured.qb, b0, b1) + kClearanceSlack < measured.clearance;
       };
@@ -484,12 +479,12 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
           standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
           continue;
         }
-        const int steps_a = scene.motionSteps(a, view.full(a0), view.full(a1), a0.held);
-        const int steps_b = scene.motionSteps(b, view.full(b0), view.full(b1), b0.held);
+        const int steps_a = scene.motionSteps(a, view.full(a, a0), view.full(a, a1), a0.held);
+        const int steps_b = scene.motionSteps(b, view.full(b, b0), view.full(b, b1), b0.held);
         // no point moves farther than its steps' motion_step within the interval: robots whose
         // bounding boxes at its start stay apart by that much are free throughout
-        if (boxesApart(checker.robotBounds(a, view.full(a0), a0.held), steps_a * scene.settings().motion_step,
-                       checker.robotBounds(b, view.full(b0), b0.held), steps_b * scene.settings().motion_step)) {
+        if (boxesApart(checker.robotBounds(a, view.full(a, a0), a0.held), steps_a * scene.settings().motion_step,
+                       checker.robotBounds(b, view.full(b, b0), b0.held), steps_b * scene.settings().motion_step)) {
           standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
           continue;
         }
@@ -497,7 +492,7 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         // the interval's own fingers and held objects, also at its end
         const auto state_at = [&](int r, int k, const RobotState& s0, const RobotState& s1) {
           const RobotState s = k == 0 ? s0 : k == steps ? s1 : view.at(r, t0 + (t1 - t0) * k / steps, true);
-          return view.full({s.q, s0.finger, s0.held, 0});
+          return view.full(r, {s.q, s0.finger, s0.held, 0});
         };
         // Samples are checked in order; after a free one, the samples up to which the robots'
         // points together travel less than their clearance there are free as well (each robot
@@ -555,7 +550,7 @@ std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const 
 RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {
   const ScheduleView view(graph, schedule);
   const RobotState state = view.at(robot, t, true);
-  return {view.full(state), state.held};
+  return {view.full(robot, state), state.held};
 }
 
 /// Per robot, the earliest time [s] at which it does something else in `b` than in `a`: up to
@@ -637,7 +632,8 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
     const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-      return checker.motionClearOf(seg.robot, fullConfiguration(a, seg.finger), fullConfiguration(b, seg.finger),
+      return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
+                                   graph.scene().configuration(seg.robot, b, seg.finger),
                                    seg.held, obstacles);
     });
     if (move == nullptr) return std::nullopt;
@@ -652,7 +648,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     const ScheduleSegment& seg = node.schedule.segments[segment];
     if (avoid.size() > kMaxParkingObstacles) return std::nullopt;
     const auto split = graph.parking(*seg.move, [&](const core::ArmConfig& q) {
-      const Eigen::VectorXd f = fullConfiguration(q, seg.finger);
+      const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
       return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
         return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
       });
