@@ -372,6 +372,11 @@ bool boxesApart(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, double gro
   return ((a.first.array() - grow > b.second.array()) || (b.first.array() - grow > a.second.array())).any();
 }
 
+/// The distance between two boxes (min, max corners).
+double boxesGap(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, const std::pair<Eigen::Vector3d, Eigen::Vector3d>& b) {
+  return (a.first - b.second).cwiseMax(b.first - a.second).cwiseMax(0.0).norm();
+}
+
 std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
   std::ostringstream out;
   out << graph.world().world->robots[c.robot_a].name << " and " << graph.world().world->robots[c.robot_b].name
@@ -483,8 +488,11 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         const int steps_b = scene.motionSteps(b, view.full(b, b0), view.full(b, b1), b0.held);
         // no point moves farther than its steps' motion_step within the interval: robots whose
         // bounding boxes at its start stay apart by that much are free throughout
-        if (boxesApart(checker.robotBounds(a, view.full(a, a0), a0.held), steps_a * scene.settings().motion_step,
-                       checker.robotBounds(b, view.full(b, b0), b0.held), steps_b * scene.settings().motion_step)) {
+        // (the gap between the boxes is a clearance as well: the robots' points stay inside)
+        const Eigen::VectorXd qa0 = view.full(a, a0), qb0 = view.full(b, b0);
+        const auto bounds_a = checker.robotBounds(a, qa0, a0.held), bounds_b = checker.robotBounds(b, qb0, b0.held);
+        if (boxesApart(bounds_a, steps_a * scene.settings().motion_step, bounds_b, steps_b * scene.settings().motion_step)) {
+          measured = {qa0, qb0, a0.held, b0.held, boxesGap(bounds_a, bounds_b)};
           standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
           continue;
         }
