@@ -698,12 +698,6 @@ struct CheckerState {
     }
   }
 
-  /// The distance between the bounds (updateBounds) of two slots: no point of either robot's
-  /// body spheres (and held object) is nearer the other's.
-  static double boundsGap(const Slot& a, const Slot& b) {
-    return (a.lo - b.hi).cwiseMax(b.lo - a.hi).cwiseMax(0.0).norm();
-  }
-
   /// Robot against robot. Both slots hold evaluated configurations.
   bool interRobotCollision(Slot& A, Slot& B) {
     const ObjectData* held_a = A.holding ? &scene->objects[A.held_object] : nullptr;
@@ -1437,6 +1431,10 @@ double slotsClearance(detail::CheckerState& state, detail::CheckerState::Slot& s
 
 }  // namespace
 
+double boxesGap(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, const std::pair<Eigen::Vector3d, Eigen::Vector3d>& b) {
+  return (a.first - b.second).cwiseMax(b.first - a.second).cwiseMax(0.0).norm();
+}
+
 double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a,
                                          const std::optional<HeldObject>& held_a, int robot_b,
                                          const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b) {
@@ -1584,12 +1582,12 @@ bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, c
     double clearance = std::numeric_limits<double>::infinity();
     for (auto& other : state.standing) {
       if (state.interRobotCollision(slot, other)) return false;
-      const double gap = detail::CheckerState::boundsGap(slot, other);
+      const double gap = boxesGap({slot.lo, slot.hi}, {other.lo, other.hi});
       if (gap > 0.0) clearance = std::min(clearance, gap);
     }
     for (auto& other : state.standing) {
       if (clearance < step_travel + kClearanceSlack) break;  // skips nothing
-      if (detail::CheckerState::boundsGap(slot, other) > 0.0) continue;
+      if (boxesGap({slot.lo, slot.hi}, {other.lo, other.hi}) > 0.0) continue;
       clearance = measure ? slotsClearance(state, slot, other, clearance) : 0.0;
     }
     // robotsClearance costs more than the checks of the few samples it skips near the others:

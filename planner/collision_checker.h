@@ -185,6 +185,9 @@ class CollisionScene {
   std::unique_ptr<detail::SceneData> data_;
 };
 
+/// The distance between two axis-aligned boxes (min, max corners), 0 when they overlap.
+double boxesGap(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, const std::pair<Eigen::Vector3d, Eigen::Vector3d>& b);
+
 /// Collision queries on a CollisionScene. Owns per-thread scratch state; cheap to construct.
 /// Configurations q hold every model position (for the UR5e + Hand-E: six arm angles [rad],
 /// then the two finger positions [m], 0 = closed, 0.025 = open). Functions throw

@@ -372,11 +372,6 @@ bool boxesApart(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, double gro
   return ((a.first.array() - grow > b.second.array()) || (b.first.array() - grow > a.second.array())).any();
 }
 
-/// The distance between two boxes (min, max corners).
-double boxesGap(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, const std::pair<Eigen::Vector3d, Eigen::Vector3d>& b) {
-  return (a.first - b.second).cwiseMax(b.first - a.second).cwiseMax(0.0).norm();
-}
-
 std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
   std::ostringstream out;
   out << graph.world().world->robots[c.robot_a].name << " and " << graph.world().world->robots[c.robot_b].name
