@@ -445,16 +445,19 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
       // the interval's pieces lie within the clearance of `measured` (each robot moves along
       // one straight piece, and the travel from a point, a weighted sum of |dq|, is largest at
       // one of the piece's ends)
-      const auto within_measured = [&](const RobotState& a0, const RobotState& a1, const RobotState& b0,
-                                       const RobotState& b1) {
+      // (q0: the interval's start configuration of each robot)
+      const auto within_measured = [&](const RobotState& a0, const Eigen::VectorXd& qa0, const RobotState& a1,
+                                       const RobotState& b0, const Eigen::VectorXd& qb0, const RobotState& b1) {
         if (measured.clearance <= 0.0 || !sameHeld(measured.held_a, a0.held) || !sameHeld(measured.held_b, b0.held)) {
           return false;
         }
-        const auto travel = [&](int r, const Eigen::VectorXd& q, const RobotState& s0, const RobotState& s1) {
-          return std::max(scene.motionTravel(r, q, view.full(r, {s0.q, s0.finger, s0.held, 0}), s0.held),
+        const auto travel = [&](int r, const Eigen::VectorXd& q, const RobotState& s0, const Eigen::VectorXd& q0,
+                                const RobotState& s1) {
+          return std::max(scene.motionTravel(r, q, q0, s0.held),
                           scene.motionTravel(r, q, view.full(r, {s1.q, s0.finger, s0.held, 0}), s0.held));
         };
-        return travel(a, measured.qa, a0, a1) + travel(b, measured.qb, b0, b1) + kClearanceSlack < measured.clearance;
+        return travel(a, measured.qa, a0, qa0, a1) + travel(b, measured.qb, b0, qb0, b1) + kClearanceSlack <
+               measured.clearance;
       };
       for (std::size_t i = 0; i + 1 < grid.size(); ++i) {
         const double t0 = toSeconds(grid[i]), t1 = toSeconds(grid[i + 1]);
@@ -475,16 +478,16 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         const RobotState a1 = view.at(a, t1, false), b1 = view.at(b, t1, false);
         const bool still = sameState(a0, a1) && sameState(b0, b1);
         if (still && standing && sameState(a0, standing->first) && sameState(b0, standing->second)) continue;
-        if (within_measured(a0, a1, b0, b1)) {
+        const Eigen::VectorXd qa0 = view.full(a, a0), qb0 = view.full(b, b0);
+        if (within_measured(a0, qa0, a1, b0, qb0, b1)) {
           standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
           continue;
         }
-        const int steps_a = scene.motionSteps(a, view.full(a, a0), view.full(a, a1), a0.held);
-        const int steps_b = scene.motionSteps(b, view.full(b, b0), view.full(b, b1), b0.held);
+        const int steps_a = scene.motionSteps(a, qa0, view.full(a, a1), a0.held);
+        const int steps_b = scene.motionSteps(b, qb0, view.full(b, b1), b0.held);
         // no point moves farther than its steps' motion_step within the interval: robots whose
         // bounding boxes at its start stay apart by that much are free throughout
         // (the gap between the boxes is a clearance as well: the robots' points stay inside)
-        const Eigen::VectorXd qa0 = view.full(a, a0), qb0 = view.full(b, b0);
         const auto bounds_a = checker.robotBounds(a, qa0, a0.held), bounds_b = checker.robotBounds(b, qb0, b0.held);
         if (boxesApart(bounds_a, steps_a * scene.settings().motion_step, bounds_b, steps_b * scene.settings().motion_step)) {
           measured = {qa0, qb0, a0.held, b0.held, boxesGap(bounds_a, bounds_b)};
