@@ -100,7 +100,7 @@ std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int r
 
 std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode mode, bool constrained, int round,
                                      std::uint64_t unconstrained) {
-  if (!constrained && mode != QueryMode::kSequential) return settings.search_expansions;
+  if (!constrained && !isSequential(mode)) return settings.search_expansions;
   return constrainedSearchExpansions(settings, round, unconstrained);
 }
 
@@ -246,7 +246,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // home; a new scheduling constraint starts the queries again
     std::uint64_t unconstrained_expansions = 0;  // of the last plan found without constraints
     const auto greedy_query = [&](QueryMode mode) {
-      static const char* const modes[] = {"", ", idle robots parking at home", ", one object at a time"};
+      static const char* const modes[] = {"", ", idle robots parking at home", ", one object at a time",
+                                          ", one object at a time, idle robots folded"};
       say(std::string("greedy query") + modes[static_cast<int>(mode)] + ", " +
           std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
       SearchBudget query_budget = search_budget;
@@ -282,11 +283,14 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     }
     // the last resort of the round: the sequential plan, its own scheduling constraints (most
     // often a robot waiting at home in the way of another's transition) starting it again; it
-    // is kept as a fallback while the next rounds look for a direct plan
-    feedbacks = 0;
-    for (bool again = !best_schedule; again && !time_up();) {
-      const SearchResult greedy = greedy_query(QueryMode::kSequential);
-      again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
+    // is kept as a fallback while the next rounds look for a direct plan. Where the robots
+    // waiting at home leave it none, they wait folded back.
+    for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
+      feedbacks = 0;
+      for (bool again = !best_schedule; again && !time_up();) {
+        const SearchResult greedy = greedy_query(mode);
+        again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
+      }
     }
     if (best_schedule && fallback_round == 0) fallback_round = round;
     // Next-Best Search: task plans in order of optimistic makespan until no better is possible.

@@ -41,6 +41,12 @@ constexpr Millis kUnreachable = -1;
 /// Samples per hyperarc and grasp the A*-like query branches on (the fastest ones).
 constexpr std::size_t kAStarSamplesPerHyperarc = 2;
 
+/// The robots a move of `history` keeps clear of, standing idle: in a sequential history, every
+/// other robot (MotionHypergraph::move's around_idle).
+std::optional<IdlePose> aroundIdle(const TransitionHistory& history) {
+  return history.sequential ? std::optional(history.idle) : std::nullopt;
+}
+
 }  // namespace
 
 HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode)
@@ -62,10 +68,28 @@ HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode)
 }
 HyperpathSearch::~HyperpathSearch() = default;
 
-TransitionHistory HyperpathSearch::source() const {
+std::optional<TransitionHistory> HyperpathSearch::source() {
   TransitionHistory history = TransitionHistory::source(*graph_);
-  history.sequential = mode_ == QueryMode::kSequential;
+  history.sequential = isSequential(mode_);
+  history.idle = idlePose();
+  if (history.sequential && history.idle == IdlePose::kFolded) {
+    // every robot folds at once (conflict resolution orders them if they meet); the first step
+    // waits for all of them
+    const SiteSet occupied = history.occupied(graph_->sites().numSites());
+    for (std::size_t r = 0; r < history.robots.size(); ++r) {
+      TransitionHistory::RobotState& robot = history.robots[r];
+      const core::ArmConfig& folded = graph_->idleConfiguration(static_cast<int>(r), IdlePose::kFolded);
+      const Move* fold = folded == robot.q ? nullptr : graph_->move(static_cast<int>(r), -1, -1, robot.q, folded, occupied);
+      if (folded != robot.q && fold == nullptr) return std::nullopt;
+      history.fold_moves.push_back(fold);
+      if (fold != nullptr) robot = {folded, fold->duration, -1, -1};
+    }
+  }
   return history;
+}
+
+IdlePose HyperpathSearch::idlePose() const {
+  return mode_ == QueryMode::kSequentialFolded ? IdlePose::kFolded : IdlePose::kHome;
 }
 
 void HyperpathSearch::updatePlacementOrder() {
@@ -247,11 +271,11 @@ bool HyperpathSearch::placeBlocked(const TransitionHistory& history, int robot, 
 }
 
 bool HyperpathSearch::blockedByIdleRobots(int transition) const {
-  if (mode_ != QueryMode::kSequential) return false;
+  if (!isSequential(mode_)) return false;
   const std::vector<TransitionMotion>& motions = graph_->transition(transition).sample.motions;
   for (int r = 0; r < graph_->scene().numRobots(); ++r) {
     const bool idle = std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) { return m.robot == r; });
-    if (idle && !graph_->clearOfHome(transition, r)) return true;
+    if (idle && !graph_->clearOfIdle(transition, r, idlePose())) return true;
   }
   return false;
 }
@@ -262,10 +286,12 @@ bool HyperpathSearch::excluded(const TransitionHistory& history, int transition)
   if (blockedByIdleRobots(transition)) return true;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     // a robot that has not acted yet stands at home; in a sequential history, every robot the
-    // transition does not need waits there
-    const bool at_home = history.sequential ? std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) {
-      return m.robot == static_cast<int>(r);
-    }) : history.robots[r].free == 0 && history.robots[r].q == robots[r].home;
+    // transition does not need waits there (or folded, where blockedByIdleRobots keeps it clear)
+    const bool at_home = history.sequential ? history.idle == IdlePose::kHome &&
+                                                  std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) {
+                                                    return m.robot == static_cast<int>(r);
+                                                  })
+                                            : history.robots[r].free == 0 && history.robots[r].q == robots[r].home;
     if (at_home && graph_->homeConflict(transition, static_cast<int>(r))) return true;
   }
   return std::any_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
@@ -301,24 +327,24 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
   Millis start = history.objects[o].since;
   for (const TransitionMotion& motion : sample.motions) {
     const TransitionHistory::RobotState& r = history.robots[motion.robot];
-    // the way to the transition's start: direct, or home first to wait out of the way
-    const core::ArmConfig& home = graph_->world().world->robots[motion.robot].home;
+    // the way to the transition's start: direct, or home (folded) first to wait out of the way
+    const core::ArmConfig& idle = graph_->idleConfiguration(motion.robot, idlePose());
     std::vector<core::ArmConfig> stops{r.q, motion.start()};
-    // in a sequential history a robot waits at home (holding its object, if any) while other
-    // robots' steps run: it went home after its last step unless it had the step just before
+    // in a sequential history a robot waits idle (holding its object, if any) while other
+    // robots' steps run: it went there after its last step unless it had the step just before
     bool park = mode_ != QueryMode::kDirect && r.object < 0;
     if (history.sequential && !history.steps.empty()) {
       const std::vector<TransitionMotion>& last = graph_->transition(history.steps.back().transition).sample.motions;
       park = std::none_of(last.begin(), last.end(), [&](const TransitionMotion& m) { return m.robot == motion.robot; });
     }
-    if (park && r.q != home && motion.start() != home) stops = {r.q, home, motion.start()};
+    if (park && r.q != idle && motion.start() != idle) stops = {r.q, idle, motion.start()};
     std::vector<const Move*> moves;
     Millis t = r.free;
     if (history.sequential) {  // once the step before has ended
       for (const TransitionHistory::RobotState& other : history.robots) t = std::max(t, other.free);
     }
     for (std::size_t k = 1; k < stops.size(); ++k) {
-      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied, history.sequential);
+      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied, aroundIdle(history));
       if (move == nullptr) return std::nullopt;
       t = after_left(move->touches, t);
       mark_busy(move->touches, t + move->duration);
@@ -367,14 +393,21 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
 std::optional<TransitionHistory> HyperpathSearch::finish(const TransitionHistory& history) {
   TransitionHistory done = history;
   const SiteSet occupied = history.occupied(graph_->sites().numSites());
+  const bool folded = history.sequential && history.idle == IdlePose::kFolded;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
-    const TransitionHistory::RobotState& robot = history.robots[r];
+    const int robot = static_cast<int>(r);
+    const TransitionHistory::RobotState& state = history.robots[r];
+    // home, or folded first while the others still finish, then home with all of them
+    const core::ArmConfig& rest = graph_->idleConfiguration(robot, folded ? IdlePose::kFolded : IdlePose::kHome);
+    const Move* move = state.q == rest ? nullptr : graph_->move(robot, -1, -1, state.q, rest, occupied, aroundIdle(history));
+    if (state.q != rest && move == nullptr) return std::nullopt;
+    done.final_moves.push_back(move);
+    done.final_starts.push_back(state.free);
+    if (!folded) continue;
     const core::ArmConfig& home = graph_->world().world->robots[r].home;
-    const Move* move =
-        robot.q == home ? nullptr : graph_->move(static_cast<int>(r), -1, -1, robot.q, home, occupied, history.sequential);
-    if (robot.q != home && move == nullptr) return std::nullopt;
-    done.home_moves.push_back(move);
-    done.home_starts.push_back(robot.free);
+    const Move* unfold = rest == home ? nullptr : graph_->move(robot, -1, -1, rest, home, occupied);
+    if (rest != home && unfold == nullptr) return std::nullopt;
+    done.unfold_moves.push_back(unfold);
   }
   return done;
 }
@@ -476,7 +509,7 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
   const ObjectSites& sites = graph_->sites();
   SearchResult result;
   std::vector<Frame> stack;
-  stack.push_back({source(), {}, false});
+  if (std::optional<TransitionHistory> start = source()) stack.push_back({std::move(*start), {}, false});
   while (!stack.empty()) {
     if (result.expansions >= budget.max_expansions || (budget.stop && budget.stop())) {
       result.status = SearchStatus::kBudget;
@@ -533,8 +566,10 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
   const ObjectSites& sites = graph_->sites();
   if (!astar_) {
     astar_ = std::make_unique<AStarState>();
-    astar_->nodes.push_back(source());
-    astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
+    if (std::optional<TransitionHistory> start = source()) {
+      astar_->nodes.push_back(std::move(*start));
+      astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
+    }
   }
   AStarState& a = *astar_;
   // the bodies' vertices (the dominance key) and their times
@@ -573,7 +608,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
     }
     const AStarState::Entry entry = a.frontier.top();
     a.frontier.pop();
-    if (!a.nodes[entry.node].home_moves.empty()) {  // a complete history: the next best
+    if (!a.nodes[entry.node].final_moves.empty()) {  // a complete history: the next best
       result.status = SearchStatus::kFound;
       result.plan = a.nodes[entry.node];
       return result;

@@ -81,7 +81,16 @@ enum class QueryMode {
   /// step move at any time, the others wait at home (holding their object, if any); a second
   /// object is picked up only when no other choice is left
   kSequential,
+  /// kSequential with the waiting robots folded back (IdlePose::kFolded), out of the way of
+  /// the others where their homes reach into the shared workspace: every robot folds at the
+  /// start and unfolds at the end
+  kSequentialFolded,
 };
+
+/// The steps of a history in this mode run one after another.
+inline bool isSequential(QueryMode mode) {
+  return mode == QueryMode::kSequential || mode == QueryMode::kSequentialFolded;
+}
 
 class HyperpathSearch {
  public:
@@ -104,17 +113,20 @@ class HyperpathSearch {
  private:
   struct Candidate;
   struct AStarState;
-  /// The virtual source's history in this query's mode.
-  TransitionHistory source() const;
+  /// The virtual source's history in this query's mode (with idle robots folded, after every
+  /// robot has folded), or std::nullopt when a robot finds no way to fold.
+  std::optional<TransitionHistory> source();
   std::vector<Candidate> candidates(const TransitionHistory& history);
   std::optional<TransitionHistory> apply(const TransitionHistory& history, const Candidate& candidate);
   std::optional<TransitionHistory> finish(const TransitionHistory& history);
   /// A scheduling constraint keeps `transition` out of the history: the history holds a
   /// transition paired with it, or a robot it must wait for still stands at home.
   bool excluded(const TransitionHistory& history, int transition) const;
-  /// In this query's sequential mode: the motions of `transition` run into a robot it does not
-  /// need, standing at home as it does while the transition runs (MotionHypergraph::clearOfHome).
+  /// In this query's sequential modes: the motions of `transition` run into a robot it does not
+  /// need, standing idle as it does while the transition runs (MotionHypergraph::clearOfIdle).
   bool blockedByIdleRobots(int transition) const;
+  /// Where this query's robots wait between their steps (kParkAtHome, the sequential modes).
+  IdlePose idlePose() const;
   bool deadlocked(const TransitionHistory& history) const;
   /// The handoff hyperarc `arc` may take the object from its giver: towards the goal (by the
   /// cost to go), or away from it out of a hand that cannot place it (placeBlocked) to a robot

@@ -67,6 +67,7 @@ MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpa
     timing_.max_acceleration[j] = settings_.max_acceleration;
   }
   grasps_.resize(world.world->objects.size());
+  folded_ = foldedConfigurations(*world.world, *scene_);
 
   // the start and goal decomposition (virtual source and target)
   for (int r = 0; r < task_space.numRobots(); ++r) {
@@ -190,29 +191,38 @@ Roadmap& MotionHypergraph::roadmap(int robot, int object, int grasp) {
   return roadmaps_.emplace(key, std::move(map)).first->second;
 }
 
+const core::ArmConfig& MotionHypergraph::idleConfiguration(int robot, IdlePose pose) const {
+  return pose == IdlePose::kFolded ? folded_.at(static_cast<std::size_t>(robot))
+                                   : world_->world->robots.at(static_cast<std::size_t>(robot)).home;
+}
+
 const Move* MotionHypergraph::move(int robot, int object, int grasp, const core::ArmConfig& from,
-                                   const core::ArmConfig& to, const SiteSet& occupied, bool around_homes) {
+                                   const core::ArmConfig& to, const SiteSet& occupied,
+                                   std::optional<IdlePose> around_idle) {
   std::vector<bool> occupied_bits(static_cast<std::size_t>(sites_.numSites()));
   for (int s = 0; s < sites_.numSites(); ++s) occupied_bits[s] = occupied.test(s);
-  const auto key = std::make_tuple(robot, object, grasp, from, to, occupied_bits, around_homes);
+  const auto key = std::make_tuple(robot, object, grasp, from, to, occupied_bits, around_idle);
   if (const auto it = moves_.find(key); it != moves_.end()) return it->second.get();
 
   const ScopedTimer timer(construction_seconds_);
   std::unique_ptr<Move> result;  // none: no path
   Roadmap& map = roadmap(robot, object, grasp);
   Roadmap::MotionFilter clear;
-  if (around_homes) {
+  if (around_idle) {
     if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
-    std::vector<StandingRobot> homes;  // the other robots at home
+    std::vector<StandingRobot> idle;  // the other robots waiting
     for (int other = 0; other < scene_->numRobots(); ++other) {
-      if (other != robot) homes.push_back({other, homeConfiguration(*world_->world, *scene_, other), std::nullopt});
+      if (other != robot) {
+        idle.push_back({other, scene_->configuration(other, idleConfiguration(other, *around_idle), kFingersOpen), std::nullopt});
+      }
     }
-    // the homes never move: an answer holds for the roadmap's life
-    std::map<std::pair<core::ArmConfig, core::ArmConfig>, bool>& known = clear_of_homes_[std::make_tuple(robot, object, grasp)];
-    clear = [this, &map, &known, robot, homes = std::move(homes)](const core::ArmConfig& a, const core::ArmConfig& b) {
+    // the idle robots never move: an answer holds for the roadmap's life
+    std::map<std::pair<core::ArmConfig, core::ArmConfig>, bool>& known =
+        clear_of_idle_[std::make_tuple(robot, object, grasp, *around_idle)];
+    clear = [this, &map, &known, robot, idle = std::move(idle)](const core::ArmConfig& a, const core::ArmConfig& b) {
       const auto [it, added] = known.try_emplace({a, b}, false);
       if (added) {
-        it->second = checker_->motionClearOf(robot, map.fullConfiguration(a), map.fullConfiguration(b), map.held(), homes);
+        it->second = checker_->motionClearOf(robot, map.fullConfiguration(a), map.fullConfiguration(b), map.held(), idle);
       }
       return it->second;
     };
@@ -334,16 +344,16 @@ bool MotionHypergraph::homeConflict(int transition_id, int robot) const {
          hyperarc_home_constraints_.contains({transition(transition_id).sample.hyperarc, robot});
 }
 
-bool MotionHypergraph::clearOfHome(int transition_id, int robot) {
-  const auto [it, added] = clear_of_home_.try_emplace({transition_id, robot}, true);
+bool MotionHypergraph::clearOfIdle(int transition_id, int robot, IdlePose pose) {
+  const auto [it, added] = clear_of_idle_transition_.try_emplace({transition_id, robot, pose}, true);
   if (!added) return it->second;
   if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
-  const StandingRobot home{robot, homeConfiguration(*world_->world, *scene_, robot), std::nullopt};
+  const StandingRobot idle{robot, scene_->configuration(robot, idleConfiguration(robot, pose), kFingersOpen), std::nullopt};
   for (const TransitionMotion& motion : transition(transition_id).sample.motions) {
     for (std::size_t i = 0; i + 1 < motion.keys.size() && it->second; ++i) {
       it->second = checker_->motionClearOf(motion.robot, scene_->configuration(motion.robot, motion.keys[i].q, motion.finger[i]),
                                            scene_->configuration(motion.robot, motion.keys[i + 1].q, motion.finger[i]),
-                                           motion.held[i], std::span(&home, 1));
+                                           motion.held[i], std::span(&idle, 1));
     }
   }
   return it->second;

@@ -49,6 +49,12 @@
 
 namespace dashbed::planner {
 
+/// Where a sequential plan's idle robots wait while the others' steps run.
+enum class IdlePose {
+  kHome,    ///< at home
+  kFolded,  ///< folded back over their bases, out of the shared workspace (foldedConfigurations)
+};
+
 struct RepresentationSettings {
   int initial_roadmap_samples = 10;    ///< samples of a roadmap when it is created (paper: 10)
   int roadmap_samples_per_round = 10;  ///< added to every roadmap per round (paper: 10)
@@ -122,13 +128,17 @@ class MotionHypergraph {
   const std::vector<int>& transitionsOf(int hyperarc, int grasp);
   const MotionTransition& transition(int id) const { return transitions_.at(id); }
 
+  /// Where `robot` waits in `pose`, gripper open: its home, or its folded configuration
+  /// (foldedConfigurations: home again for a robot that cannot fold).
+  const core::ArmConfig& idleConfiguration(int robot, IdlePose pose) const;
+
   /// The move hyperarc taking `robot` (alone when object == -1, else holding `object` in
   /// `grasp`) from `from` to `to` without touching any `occupied` site, or nullptr when the
   /// element's roadmap does not connect them yet. Cached; the pointer stays valid.
-  /// With `around_homes`, the path also keeps clear of every other robot standing at its home
-  /// configuration with its gripper open (a sequential plan's idle robots).
+  /// With `around_idle`, the path also keeps clear of every other robot standing at its
+  /// idleConfiguration in that pose with its gripper open (a sequential plan's idle robots).
   const Move* move(int robot, int object, int grasp, const core::ArmConfig& from, const core::ArmConfig& to,
-                   const SiteSet& occupied, bool around_homes = false);
+                   const SiteSet& occupied, std::optional<IdlePose> around_idle = std::nullopt);
 
   /// `original` planned again on its roadmap, with every straight piece also passing `clear`
   /// (conflict resolution's detour around other robots), or nullptr when the roadmap has no
@@ -159,10 +169,10 @@ class MotionHypergraph {
   /// hyperarc on a second sample, as above. Returns false when known already.
   bool addHomeConstraint(int transition, int robot);
   bool homeConflict(int transition, int robot) const;
-  /// True when every motion of `transition` keeps clear of `robot` standing at its home
-  /// configuration with its gripper open, where a sequential plan's idle robots wait. A
-  /// geometric check (unlike homeConflict), made once per pair.
-  bool clearOfHome(int transition, int robot);
+  /// True when every motion of `transition` keeps clear of `robot` standing at its
+  /// idleConfiguration in `pose` with its gripper open, where a sequential plan's idle robots
+  /// wait. A geometric check (unlike homeConflict), made once per pair and pose.
+  bool clearOfIdle(int transition, int robot, IdlePose pose);
   std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size() + home_constraints_.size(); }
   void clearSchedulingConstraints();  ///< all of them
 
@@ -220,7 +230,8 @@ class MotionHypergraph {
   std::uint64_t seed_;
   RepresentationSettings settings_;
   std::unique_ptr<CollisionScene> scene_;
-  std::unique_ptr<CollisionChecker> checker_;  // for move(..., around_homes) and clearOfHome
+  std::unique_ptr<CollisionChecker> checker_;  // for move(..., around_idle) and clearOfIdle
+  std::vector<core::ArmConfig> folded_;          // [robot] idleConfiguration(robot, kFolded)
   ObjectSites sites_;
   std::unique_ptr<TransitionSampler> sampler_;
   TimingLimits timing_;
@@ -234,9 +245,11 @@ class MotionHypergraph {
   std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
-  // move(..., around_homes)'s answers per roadmap: (a, b) -> the straight motion keeps clear of the homes
-  std::map<std::tuple<int, int, int>, std::map<std::pair<core::ArmConfig, core::ArmConfig>, bool>> clear_of_homes_;
-  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>, bool>, std::unique_ptr<Move>> moves_;  // cache of move() (null: no path)
+  // move(..., around_idle)'s answers per roadmap and pose: (a, b) -> the straight motion keeps
+  // clear of the other robots standing idle
+  std::map<std::tuple<int, int, int, IdlePose>, std::map<std::pair<core::ArmConfig, core::ArmConfig>, bool>> clear_of_idle_;
+  std::map<std::tuple<int, int, int, core::ArmConfig, core::ArmConfig, std::vector<bool>, std::optional<IdlePose>>, std::unique_ptr<Move>>
+      moves_;  // cache of move() (null: no path)
   std::deque<Move> detours_;  // made by detour()
   std::vector<std::unique_ptr<Move>> retired_moves_;  // moves of earlier rounds (pointers to them stay valid)
   std::set<std::pair<int, int>> scheduling_constraints_;  // (lower id, higher id)
@@ -245,7 +258,7 @@ class MotionHypergraph {
   std::set<std::pair<int, int>> home_constraints_;                // (transition, robot)
   std::map<std::pair<int, int>, int> hyperarc_home_counts_;       // (task-space hyperarc, robot) -> samples
   std::set<std::pair<int, int>> hyperarc_home_constraints_;       // those with two or more
-  std::map<std::pair<int, int>, bool> clear_of_home_;             // (transition, robot) -> clearOfHome
+  std::map<std::tuple<int, int, IdlePose>, bool> clear_of_idle_transition_;  // (transition, robot, pose) -> clearOfIdle
   std::vector<int> source_, target_;
 };
 

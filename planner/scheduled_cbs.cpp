@@ -232,8 +232,13 @@ std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const Tra
     return seg;
   };
   std::vector<ScheduleSegment> segments;
+  const int steps = static_cast<int>(history.steps.size());
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     const int robot = static_cast<int>(r);
+    if (r < history.fold_moves.size() && history.fold_moves[r] != nullptr) {
+      segments.push_back(move_segment(robot, history.fold_moves[r], -1));
+      segments.back().phase = -1;
+    }
     int last = -1;  // the robot's last transition so far
     for (std::size_t i = 0; i < history.steps.size(); ++i) {
       const ScheduledTransition& step = history.steps[i];
@@ -255,9 +260,13 @@ std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const Tra
         segments.push_back(seg);
       }
     }
-    if (history.home_moves[r] != nullptr && history.home_moves[r]->duration > 0) {
-      segments.push_back(move_segment(robot, history.home_moves[r], -1));
+    if (history.final_moves[r] != nullptr && history.final_moves[r]->duration > 0) {
+      segments.push_back(move_segment(robot, history.final_moves[r], -1));
       segments.back().phase = last;
+    }
+    if (r < history.unfold_moves.size() && history.unfold_moves[r] != nullptr) {
+      segments.push_back(move_segment(robot, history.unfold_moves[r], -1));
+      segments.back().phase = steps;
     }
   }
   return segments;
@@ -305,9 +314,10 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
       }
     }
   }
-  if (history.sequential) {  // each phase after the one before
-    std::vector<std::vector<int>> phases(history.steps.size());
-    for (int s = 0; s < n; ++s) phases.at(static_cast<std::size_t>(std::max(segments[s].phase, 0))).push_back(s);
+  if (history.sequential) {  // each phase after the one before: folding, the steps, unfolding
+    std::vector<std::vector<int>> phases(history.steps.size() + 2);
+    for (int s = 0; s < n; ++s) phases.at(static_cast<std::size_t>(segments[s].phase + 1)).push_back(s);
+    std::erase_if(phases, [](const std::vector<int>& phase) { return phase.empty(); });
     for (std::size_t k = 1; k < phases.size(); ++k) {
       for (const int before : phases[k - 1]) {
         for (const int after : phases[k]) edges.push_back({before, after, segments[before].duration});

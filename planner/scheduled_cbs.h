@@ -4,7 +4,7 @@
 // of a transition history into one where no two robots collide.
 //
 // Each robot's part of the history becomes a sequence of segments (a move along its roadmap
-// path, then its part of a transition, ...; finally the move home), with the robot standing
+// path, then its part of a transition, ...; finally the move home, or folded and home), with the robot standing
 // still between segments. Segment start times S are the unknowns of a simple temporal network:
 //  - a robot's segments run in order (S_next >= S + duration), and a move into a transition
 //    ends as the transition starts (the robot waits before the move, where it was, rather
@@ -15,8 +15,9 @@
 //    place begins;
 //  - a sequential history (TransitionHistory::sequential): every segment of a step's phase
 //    (ScheduleSegment::phase) starts after every segment of the phase before has ended, so
-//    the robots of one step move while the others stand at home (or hold the object the step
-//    passes on);
+//    the robots of one step move while the others stand at home or folded (or hold the object
+//    the step passes on); with idle robots folded, the robots fold before the first step and
+//    unfold after the last;
 //  - the constraints added by the high level.
 // The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
 // constraints cannot all hold).
@@ -59,10 +60,11 @@ struct ScheduleSegment {
   int robot = -1;
   const Move* move = nullptr;                  ///< a move, or
   const TransitionMotion* motion = nullptr;    ///< a robot's part of a transition
-  int step = -1;      ///< the history step it belongs to (-1: the move home)
+  int step = -1;      ///< the history step it belongs to (-1: folding, the final move, unfolding)
   /// The history step during which it runs in a sequential history: its step, except that a
-  /// robot's way home after a transition (parking, or the move home at the end) belongs to that
-  /// transition's step.
+  /// robot's way to where it waits after a transition (parking, or the final move) belongs to
+  /// that transition's step; folding comes before every step (-1), unfolding after them all
+  /// (the number of steps).
   int phase = -1;
   Millis duration = 0;
   std::optional<HeldObject> held;  ///< moves: the object carried
@@ -105,7 +107,7 @@ struct ConflictResult {
   std::vector<std::pair<int, int>> home_blocked;
 };
 
-/// Resolves the robot-robot conflicts of a complete history (with its moves home).
+/// Resolves the robot-robot conflicts of a complete history (with its final moves).
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
                                 const ConflictResolutionBudget& budget);
 

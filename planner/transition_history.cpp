@@ -41,10 +41,14 @@ Millis TransitionHistory::makespan() const {
   Millis end = 0;
   for (std::size_t r = 0; r < robots.size(); ++r) {
     Millis robot_end = robots[r].free;
-    if (r < home_moves.size() && home_moves[r] != nullptr) robot_end = home_starts[r] + home_moves[r]->duration;
+    if (r < final_moves.size() && final_moves[r] != nullptr) robot_end = final_starts[r] + final_moves[r]->duration;
     end = std::max(end, robot_end);
   }
-  return end;
+  Millis unfolding = 0;
+  for (const Move* move : unfold_moves) {
+    if (move != nullptr) unfolding = std::max(unfolding, move->duration);
+  }
+  return end + unfolding;
 }
 
 }  // namespace dashbed::planner

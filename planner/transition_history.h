@@ -48,9 +48,16 @@ struct TransitionHistory {
   /// The steps run one after another, never two at a time (QueryMode::kSequential): a step's
   /// moves start once the step before has ended, and conflict resolution keeps that order.
   bool sequential = false;
-  /// Final move of each robot back home (nullptr: already there); set when complete.
-  std::vector<const Move*> home_moves;
-  std::vector<Millis> home_starts;
+  /// In a sequential history: where the robots of other steps wait.
+  IdlePose idle = IdlePose::kHome;
+  /// With idle robots folded: each robot's move from home to its folded configuration, all at
+  /// the start, before the first step; and back home from there once the last step and every
+  /// final move have ended (nullptr: none, the robot cannot fold). Empty otherwise.
+  std::vector<const Move*> fold_moves, unfold_moves;
+  /// Final move of each robot to where it rests at the end (nullptr: already there), and when it
+  /// starts; set when complete. Home, or with idle robots folded, the folded configuration.
+  std::vector<const Move*> final_moves;
+  std::vector<Millis> final_starts;
 
   /// The virtual source: robots alone at home, objects at their starts.
   static TransitionHistory source(const MotionHypergraph& graph);
@@ -61,7 +68,7 @@ struct TransitionHistory {
   SiteSet filledGoals(int sites) const;
   /// Every object with a goal is at it.
   bool complete(const ObjectSites& sites) const;
-  /// Latest time any robot is busy (including the home moves once set).
+  /// Latest time any robot is busy (including the final moves and the unfolding once set).
   Millis makespan() const;
 };
 

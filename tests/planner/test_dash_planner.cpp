@@ -305,6 +305,29 @@ TEST_CASE("a pick that runs into a robot standing at home is planned around with
   CHECK(plan.actions[1].type == core::ActionType::kHandoff);
 }
 
+TEST_CASE("a robot standing at home over the only pick another robot can make folds out of its way", "[planner][dash]") {
+  // the 38 mm cube cannot be handed over and only r1 places it; r0 at home stands over it
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("idle_home_fold.yaml"));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  const core::Plan& plan = *result.plan;
+  requireValidActions(plan, *world.world);
+  requireNoRobotCollision(plan, world);
+  REQUIRE(plan.actions.size() == 2);
+  CHECK(plan.actions[0].robot == "r1");
+  CHECK(plan.actions[1].robot == "r1");
+  // r0 leaves home only to fold, and stands folded (upper arm leaning back) while r1 picks
+  const core::RobotTrajectory& r0 = plan.trajectories[0];
+  const double pick = plan.actions[0].end;
+  const auto at = [&](double t) {
+    return std::find_if(r0.points.begin(), r0.points.end(), [&](const core::TrajectoryPoint& p) { return p.t >= t; });
+  };
+  REQUIRE(at(pick) != r0.points.end());
+  CHECK(at(pick)->q[1] < world.world->robots[0].home[1] - 0.5);
+  CHECK(r0.points.back().q == world.world->robots[0].home);
+}
+
 TEST_CASE("a goal slot only a robot missing the region's centre reaches is placed by that robot", "[planner][dash]") {
   // r1 reaches the bin's centre, r0 only the slot the cube is given: the place is r0's
   const core::LoadedWorld world = core::loadWorld(testWorldPath("slot_off_centre_reach.yaml"));
@@ -407,7 +430,9 @@ TEST_CASE("a sequential greedy query looks as far as a constrained one", "[plann
     CHECK(greedySearchExpansions(settings, mode, false, 1, 30) == 20000);
     CHECK(greedySearchExpansions(settings, mode, true, 1, 30) == 1000);
   }
-  CHECK(greedySearchExpansions(settings, QueryMode::kSequential, false, 1, 30) == 1000);
-  CHECK(greedySearchExpansions(settings, QueryMode::kSequential, false, 3, 30) == 4000);
-  CHECK(greedySearchExpansions(settings, QueryMode::kSequential, true, 2, 3000) == 6000);
+  for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
+    CHECK(greedySearchExpansions(settings, mode, false, 1, 30) == 1000);
+    CHECK(greedySearchExpansions(settings, mode, false, 3, 30) == 4000);
+    CHECK(greedySearchExpansions(settings, mode, true, 2, 3000) == 6000);
+  }
 }

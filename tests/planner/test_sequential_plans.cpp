@@ -150,8 +150,8 @@ TEST_CASE("a transition is clear of a robot at home unless its motions run into 
     for (const int id : g.graph.transitionsOf(static_cast<int>(h), -1)) {
       const bool hits = hitsHome(g, checker, id, idle);
       INFO("pick " << id << " by r" << arc.robot);
-      if (hits) CHECK_FALSE(g.graph.clearOfHome(id, idle));
-      (g.graph.clearOfHome(id, idle) ? clear : blocked) += 1;
+      if (hits) CHECK_FALSE(g.graph.clearOfIdle(id, idle, IdlePose::kHome));
+      (g.graph.clearOfIdle(id, idle, IdlePose::kHome) ? clear : blocked) += 1;
     }
   }
   CHECK(blocked > 0);
@@ -172,6 +172,84 @@ TEST_CASE("a sequential task plan keeps every step clear of the robots waiting a
     for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
       INFO("transition " << step.transition << ", r" << idle << " at home");
       if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
+    }
+  }
+}
+
+TEST_CASE("a robot folds back over its base unless it would hit something, then it waits at home",
+          "[planner][dash]") {
+  Graph g(testWorldPath("idle_home_fold.yaml"));
+  const core::World& world = *g.world.world;
+  const std::vector<core::ArmConfig> folded = foldedConfigurations(world, g.graph.scene());
+  REQUIRE(folded.size() == 2);
+  // r0 folds: the arm pulled in, the gripper nearer its base than at home
+  CHECK(folded[0] != world.robots[0].home);
+  CHECK(g.graph.idleConfiguration(0, IdlePose::kFolded) == folded[0]);
+  CHECK(g.graph.idleConfiguration(0, IdlePose::kHome) == world.robots[0].home);
+  const auto reach = [&](const core::ArmConfig& q) {  // horizontal, from the base
+    return (*g.world.robots)[0].ik->tcpPose(q).translation().head<2>().norm();
+  };
+  CHECK(reach(folded[0]) < reach(world.robots[0].home) - 0.2);
+  CollisionChecker checker(g.graph.scene());
+  const Eigen::VectorXd x0 = g.graph.scene().configuration(0, folded[0], kFingersOpen);
+  CHECK(checker.robotFree(0, x0, {}));
+  CHECK(checker.robotsFree(0, x0, std::nullopt, 1, homeConfiguration(world, g.graph.scene(), 1), std::nullopt));
+  // r1's upper arm would lean into the wall behind it
+  CHECK(folded[1] == world.robots[1].home);
+  core::ArmConfig r1_folded = world.robots[1].home;
+  r1_folded[1] = folded[0][1];
+  r1_folded[2] = folded[0][2];
+  r1_folded[3] = folded[0][3];
+  CHECK_FALSE(checker.robotFree(1, g.graph.scene().configuration(1, r1_folded, kFingersOpen), {}));
+}
+
+TEST_CASE("with idle robots folded, a sequential plan folds first, waits folded and unfolds last",
+          "[planner][dash]") {
+  // the 38 mm cube cannot be handed over, only r1 places it, and r1's picks run into r0 at home
+  Graph g(testWorldPath("idle_home_fold.yaml"));
+  const SearchResult at_home = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
+  CHECK(at_home.status == SearchStatus::kExhausted);
+  const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequentialFolded).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const TransitionHistory& history = *found.plan;
+  CHECK(history.sequential);
+  CHECK(history.idle == IdlePose::kFolded);
+  REQUIRE(history.fold_moves.size() == 2);
+  REQUIRE(history.unfold_moves.size() == 2);
+  REQUIRE(history.fold_moves[0] != nullptr);
+  CHECK(history.fold_moves[1] == nullptr);  // r1 cannot fold (the wall)
+  CHECK(history.fold_moves[0]->path.back() == g.graph.idleConfiguration(0, IdlePose::kFolded));
+  REQUIRE(history.unfold_moves[0] != nullptr);
+  CHECK(history.unfold_moves[0]->path.back() == g.world.world->robots[0].home);
+  for (const ScheduledTransition& step : history.steps) CHECK(robotsOf(g.graph, step) == std::vector<int>{1});
+
+  const ConflictResult resolved = resolveConflicts(g.graph, history, conflictBudget());
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const Schedule& schedule = *resolved.schedule;
+  CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
+  // r0 is folded (its fold move over) whenever r1 acts, and unfolds once r1 is done
+  Millis folded = -1, unfolds = -1, r1_first = -1, r1_last = 0;
+  for (std::size_t s = 0; s < schedule.segments.size(); ++s) {
+    const ScheduleSegment& seg = schedule.segments[s];
+    const Millis end = schedule.start[s] + seg.duration;
+    if (seg.move == history.fold_moves[0]) folded = end;
+    if (seg.move == history.unfold_moves[0]) unfolds = schedule.start[s];
+    if (seg.robot == 1) {
+      if (r1_first < 0) r1_first = schedule.start[s];
+      r1_last = std::max(r1_last, end);
+    }
+  }
+  REQUIRE(folded >= 0);
+  REQUIRE(unfolds >= 0);
+  CHECK(folded <= r1_first);
+  CHECK(unfolds >= r1_last);
+  CHECK(schedule.makespan == unfolds + history.unfold_moves[0]->duration);
+  // the written plan starts and ends with both robots at home
+  const core::Plan plan = writePlan(g.graph, history, schedule);
+  for (std::size_t r = 0; r < 2; ++r) {
+    const core::ArmConfig& home = g.world.world->robots[r].home;
+    for (const core::TrajectoryPoint* p : {&plan.trajectories[r].points.front(), &plan.trajectories[r].points.back()}) {
+      for (std::size_t j = 0; j < 6; ++j) CHECK(p->q[j] == Approx(home[j]).margin(1e-9));
     }
   }
 }
