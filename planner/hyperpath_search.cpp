@@ -287,10 +287,9 @@ bool HyperpathSearch::excluded(const TransitionHistory& history, int transition)
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     // a robot that has not acted yet stands at home; in a sequential history, every robot the
     // transition does not need waits there (or folded, where blockedByIdleRobots keeps it clear)
-    const bool at_home = history.sequential ? history.idle == IdlePose::kHome &&
-                                                  std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) {
-                                                    return m.robot == static_cast<int>(r);
-                                                  })
+    const bool idle =
+        std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) { return m.robot == static_cast<int>(r); });
+    const bool at_home = history.sequential ? idle && history.idle == IdlePose::kHome
                                             : history.robots[r].free == 0 && history.robots[r].q == robots[r].home;
     if (at_home && graph_->homeConflict(transition, static_cast<int>(r))) return true;
   }

@@ -70,22 +70,25 @@ void addGenCommand(CLI::App& app) {
       "into one bin per class. 2 robots face each other across the table (r0 owns the red and "
       "blue bins, r1 green and yellow); 4 robots stand in a square facing the centre (robot k "
       "owns class k). With --layout rows, 2..8 robots stand in two facing rows along a long "
-      "table with the bins at its two ends. 'cross' starts every cube in front of a robot "
-      "that cannot reach its bin, so every cube must be handed over; 'random' starts cubes "
-      "anywhere in the shared workspace. Cubes stay at least 0.1 m apart; too many cubes for "
-      "the zones is an error that says how many fit.");
-  sort->add_option("--robots", sort_options->params.robots, "Number of robots: 2 or 4; in rows even, 2..8")
-      ->check(CLI::IsMember({2, 4, 6, 8}))
+      "table with the bins at its two ends; with --layout ring, 3..6 robots stand on a circle "
+      "0.75 m from one shared centre (robot k owns class k, its bin on its left) and the cubes "
+      "start within 0.35 m of the centre. 'cross' starts every cube in front of a robot "
+      "that cannot reach its bin (in a ring: across it), so every cube must be handed over; "
+      "'random' starts cubes anywhere in the shared workspace. Cubes stay at least 0.1 m apart; "
+      "too many cubes for the zones is an error that says how many fit.");
+  sort->add_option("--robots", sort_options->params.robots,
+                   "Number of robots: 2 or 4; in rows even, 2..8; in a ring 3..6")
+      ->check(CLI::Range(2, 8))
       ->capture_default_str();
   sort->add_option("--layout", sort_options->layout,
-                   "Robot layout: paper (2 facing, 4 in a square) or rows (two facing rows)")
-      ->check(CLI::IsMember({"paper", "rows"}))
+                   "Robot layout: paper (2 facing, 4 in a square), rows (two facing rows) or ring (facing one centre)")
+      ->check(CLI::IsMember({"paper", "rows", "ring"}))
       ->capture_default_str();
   sort->add_option("--cubes", sort_options->params.cubes, "Number of cubes (>= 1)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   sort->add_option("--classes", sort_options->params.classes,
-                   "Number of colour classes, 1..4 (exactly 4 with 4 robots)")
+                   "Number of colour classes, 1..4 (exactly 4 with 4 robots in the paper layout; in a ring at most one per robot)")
       ->check(CLI::Range(1, 4))
       ->capture_default_str();
   sort->add_option("--start", sort_options->start, "Start layout: cross or random")

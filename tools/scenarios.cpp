@@ -41,12 +41,23 @@ StartLayout parseStartLayout(const std::string& text) {
   throw std::invalid_argument("start layout must be 'cross' or 'random', got '" + text + "'");
 }
 
-std::string toString(RobotLayout layout) { return layout == RobotLayout::kPaper ? "paper" : "rows"; }
+std::string toString(RobotLayout layout) {
+  switch (layout) {
+    case RobotLayout::kPaper:
+      return "paper";
+    case RobotLayout::kRows:
+      return "rows";
+    case RobotLayout::kRing:
+      return "ring";
+  }
+  return "paper";
+}
 
 RobotLayout parseRobotLayout(const std::string& text) {
   if (text == "paper") return RobotLayout::kPaper;
   if (text == "rows") return RobotLayout::kRows;
-  throw std::invalid_argument("robot layout must be 'paper' or 'rows', got '" + text + "'");
+  if (text == "ring") return RobotLayout::kRing;
+  throw std::invalid_argument("robot layout must be 'paper', 'rows' or 'ring', got '" + text + "'");
 }
 
 namespace {
@@ -74,6 +85,11 @@ constexpr double kJitter = 0.01;  // [m], max offset of a cube from its lattice 
 constexpr double kCellPitch = kMinCubeSpacing + 2.0 * kJitter;
 constexpr double kRowPitch = 1.0;  // [m] between the columns of the rows layout
 constexpr int kMaxRowRobots = 8;
+// ring layout: bases this far from the centre (six of them 0.75 m apart; home puts a gripper
+// 0.49 m in front of its base, 0.26 m from the centre), cubes within kRingCubeRadius of it
+constexpr double kRingRadius = 0.75;
+constexpr double kRingCubeRadius = 0.35;
+constexpr int kMinRingRobots = 3, kMaxRingRobots = 6;
 
 constexpr std::array<double, 6> kHome{0.0, -1.5708, 1.5708, -1.5708, -1.5708, 0.0};
 // shelving: kHome would put the gripper into the shelf (TCP 0.49 m ahead of the base), and a
@@ -200,7 +216,8 @@ std::string describeZoneCapacity(const char* zone, std::size_t fit, std::size_t 
 
 core::World generateSorting(const SortingParams& params) {
   const bool rows = params.layout == RobotLayout::kRows;
-  if (!rows && params.robots != 2 && params.robots != 4) {
+  const bool ring = params.layout == RobotLayout::kRing;
+  if (params.layout == RobotLayout::kPaper && params.robots != 2 && params.robots != 4) {
     throw std::invalid_argument("sorting: robots must be 2 or 4, got " +
                                 std::to_string(params.robots));
   }
@@ -208,13 +225,22 @@ core::World generateSorting(const SortingParams& params) {
     throw std::invalid_argument("sorting: robots in rows must be even, 2.." + std::to_string(kMaxRowRobots) +
                                 ", got " + std::to_string(params.robots));
   }
+  if (ring && (params.robots < kMinRingRobots || params.robots > kMaxRingRobots)) {
+    throw std::invalid_argument("sorting: robots in a ring must be " + std::to_string(kMinRingRobots) + ".." +
+                                std::to_string(kMaxRingRobots) + ", got " + std::to_string(params.robots));
+  }
   if (params.classes < 1 || params.classes > 4) {
     throw std::invalid_argument("sorting: classes must be in 1..4, got " +
                                 std::to_string(params.classes));
   }
-  if (!rows && params.robots == 4 && params.classes != 4) {
+  if (params.layout == RobotLayout::kPaper && params.robots == 4 && params.classes != 4) {
     throw std::invalid_argument("sorting: 4 robots need exactly 4 classes (one per robot), got " +
                                 std::to_string(params.classes));
+  }
+  if (ring && params.classes > params.robots) {
+    throw std::invalid_argument("sorting: a ring of " + std::to_string(params.robots) +
+                                " robots owns at most one class per robot, got " + std::to_string(params.classes) +
+                                " classes");
   }
   if (params.cubes < 1) {
     throw std::invalid_argument("sorting: cubes must be at least 1, got " +
@@ -223,8 +249,8 @@ core::World generateSorting(const SortingParams& params) {
 
   core::World world;
   std::vector<SortingRobot> robots;
-  std::vector<Zone> exclusive_zones;  // one per robot, in front of it
-  std::vector<Zone> random_zones;     // the zones random starts draw from
+  std::vector<std::vector<Eigen::Vector2d>> exclusive_cells;  // per robot, in front of it
+  std::vector<Eigen::Vector2d> random_cells;                  // where random starts draw from
   std::vector<Eigen::Vector2d> bin_positions(kClassNames.size());
   std::vector<Eigen::Vector2d> bin_outward(kClassNames.size());  // a bigger bin grows this way
 
@@ -237,7 +263,7 @@ core::World generateSorting(const SortingParams& params) {
       const Eigen::Vector2d p(-half + (r / 2) * kRowPitch + 0.0, side * 0.7);
       const Eigen::Vector2d u(0.0, -side);
       robots.push_back({p, u, {}});
-      exclusive_zones.push_back({p, u, 0.25, 0.45, -0.3, 0.3});
+      exclusive_cells.push_back(zoneCells({p, u, 0.25, 0.45, -0.3, 0.3}));
     }
     // red and blue beyond the first column, green and yellow beyond the last
     robots[0].owned_classes = {0};
@@ -246,7 +272,38 @@ core::World generateSorting(const SortingParams& params) {
     robots[params.robots - 2].owned_classes.push_back(3);
     bin_positions = {{-half - 0.5, -0.35}, {half + 0.5, 0.35}, {-half - 0.5, 0.35}, {half + 0.5, -0.35}};
     bin_outward = {{-1.0, 0.0}, {1.0, 0.0}, {-1.0, 0.0}, {1.0, 0.0}};
-    random_zones = {{{0.0, 0.0}, {1.0, 0.0}, -half - 0.3, half + 0.3, -0.26, 0.26}};
+    random_cells = zoneCells({{0.0, 0.0}, {1.0, 0.0}, -half - 0.3, half + 0.3, -0.26, 0.26});
+  } else if (ring) {
+    const int n = params.robots;
+    world.fixtures.push_back(makeTable(2 * kRingRadius + 0.9, 2 * kRingRadius + 0.9));
+    // (rounded, so that written coordinates carry no rounding noise: e.g. r0 faces +x exactly)
+    const auto rounded = [](const Eigen::Vector2d& x, double unit) {
+      return Eigen::Vector2d((x / unit).array().round() * unit + 0.0);
+    };
+    for (int k = 0; k < n; ++k) {
+      const double a = kPi + 2 * kPi * k / n;
+      const Eigen::Vector2d out = rounded({std::cos(a), std::sin(a)}, 1e-12);  // from the centre to the base
+      const Eigen::Vector2d u = -out, v(out.y(), -out.x());  // heading, the robot's left
+      const Eigen::Vector2d p = rounded(kRingRadius * out, 1e-6);
+      robots.push_back({p, u, {}});
+      if (k < params.classes) {
+        robots[k].owned_classes = {k};
+        bin_positions[k] = rounded(p - 0.2 * u + 0.3 * v, 1e-6);  // as in the square
+        bin_outward[k] = v;
+      }
+    }
+    // the lattice of the centre disc, each cell in the zone of the robot nearest by angle
+    exclusive_cells.resize(n);
+    const Zone square{{0.0, 0.0}, {1.0, 0.0}, -kRingCubeRadius, kRingCubeRadius, -kRingCubeRadius, kRingCubeRadius};
+    for (const Eigen::Vector2d& cell : zoneCells(square)) {
+      if (cell.norm() > kRingCubeRadius) continue;
+      random_cells.push_back(cell);
+      int nearest = 0;
+      for (int k = 1; k < n; ++k) {
+        if (-robots[k].heading_W.dot(cell) > -robots[nearest].heading_W.dot(cell) + 1e-12) nearest = k;
+      }
+      exclusive_cells[nearest].push_back(cell);
+    }
   } else if (params.robots == 2) {
     world.fixtures.push_back(makeTable(2.0, 1.4));
     robots = {{{-0.7, 0.0}, {1.0, 0.0}, {0, 2}},  // r0 owns red, blue
@@ -255,8 +312,8 @@ core::World generateSorting(const SortingParams& params) {
     bin_outward = {{0.0, -1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.0, -1.0}};  // away from the cubes
     // zones in the world frame (identity frame): robot-exclusive strips and the shared area
     const Eigen::Vector2d o(0.0, 0.0), x(1.0, 0.0);
-    exclusive_zones = {{o, x, -0.45, -0.25, -0.26, 0.26}, {o, x, 0.25, 0.45, -0.26, 0.26}};
-    random_zones = {{o, x, -0.45, 0.45, -0.26, 0.26}};
+    exclusive_cells = {zoneCells({o, x, -0.45, -0.25, -0.26, 0.26}), zoneCells({o, x, 0.25, 0.45, -0.26, 0.26})};
+    random_cells = zoneCells({o, x, -0.45, 0.45, -0.26, 0.26});
   } else {
     world.fixtures.push_back(makeTable(2.4, 2.4));
     const std::array<Eigen::Vector2d, 4> headings{
@@ -271,9 +328,9 @@ core::World generateSorting(const SortingParams& params) {
       // the bin is beside the robot on its left and slightly behind it
       bin_positions[k] = (p - 0.2 * u + 0.3 * v).array() + 0.0;
       bin_outward[k] = v;
-      exclusive_zones.push_back({p, u, 0.25, 0.45, -0.15, 0.15});
+      exclusive_cells.push_back(zoneCells({p, u, 0.25, 0.45, -0.15, 0.15}));
+      random_cells.insert(random_cells.end(), exclusive_cells.back().begin(), exclusive_cells.back().end());
     }
-    random_zones = exclusive_zones;
   }
 
   for (std::size_t r = 0; r < robots.size(); ++r) {
@@ -296,11 +353,12 @@ core::World generateSorting(const SortingParams& params) {
   for (int i = 0; i < params.cubes; ++i) cube_class[i] = i % params.classes;
 
   // start zone of each cube: cross puts a cube in front of a robot that cannot reach its bin
-  // (the other robot of two; the opposite robot of four)
+  // (the other robot of two; the opposite robot of four, or across a ring), random draws from
+  // one pooled zone
   std::vector<int> cube_zone(params.cubes, 0);
-  std::vector<Zone> zones;
+  std::vector<std::vector<Eigen::Vector2d>> cells;
   if (params.start == StartLayout::kCross) {
-    zones = exclusive_zones;
+    cells = exclusive_cells;
     const int n = params.robots;
     for (int i = 0; i < params.cubes; ++i) {
       const int owner = class_owner[cube_class[i]];
@@ -308,22 +366,11 @@ core::World generateSorting(const SortingParams& params) {
       cube_zone[i] = rows ? n - 1 - owner : (owner + n / 2) % n;
     }
   } else {
-    // random: one pooled zone (the union of the cells of all random zones)
-    zones = random_zones;
+    cells = {random_cells};
   }
 
-  // cells per zone (pooled for random), shuffled by the seed
+  // cells per zone, shuffled by the seed
   ScenarioRng rng(params.seed);
-  std::vector<std::vector<Eigen::Vector2d>> cells;
-  if (params.start == StartLayout::kCross) {
-    for (const Zone& zone : zones) cells.push_back(zoneCells(zone));
-  } else {
-    cells.emplace_back();
-    for (const Zone& zone : zones) {
-      const auto zone_cells = zoneCells(zone);
-      cells[0].insert(cells[0].end(), zone_cells.begin(), zone_cells.end());
-    }
-  }
   for (std::size_t z = 0; z < cells.size(); ++z) {
     const auto wanted = static_cast<std::size_t>(
         std::count(cube_zone.begin(), cube_zone.end(), static_cast<int>(z)));
@@ -355,24 +402,24 @@ core::World generateSorting(const SortingParams& params) {
   }
 
   const std::string layout = toString(params.start);
+  const bool paper = params.layout == RobotLayout::kPaper;
+  const std::string layout_option = paper ? "" : "--layout " + toString(params.layout) + " ";
   world.name = "sort_" + std::to_string(params.robots) + "r_" + std::to_string(params.cubes) + "c_" +
-               (rows ? "rows_" : "") + layout + "_s" + std::to_string(params.seed);
-  world.description =
-      std::string(rows ? "Sorting: " : "Sorting (DaSH paper): ") + std::to_string(params.robots) +
-      " UR5e + Hand-E robots " +
-      (rows                 ? "in two facing rows along a table (the bins at its ends)"
-       : params.robots == 2 ? "facing each other across a table"
-                            : "in a square facing the centre") +
-      " sort " + std::to_string(params.cubes) + " cubes of " + std::to_string(params.classes) +
-      " colour classes into their bins; " +
-      (params.start == StartLayout::kCross
-           ? "cross start (every cube starts away from its bin's robot and must be handed over)"
-           : "random start in the shared workspace") +
-      "; generated by `dashbed gen sort " + (rows ? "--layout rows " : "") + "--robots " +
-      std::to_string(params.robots) +
-      " --cubes " + std::to_string(params.cubes) + " --classes " +
-      std::to_string(params.classes) + " --start " + layout + " --seed " +
-      std::to_string(params.seed) + "`.";
+               (paper ? "" : toString(params.layout) + "_") + layout + "_s" + std::to_string(params.seed);
+  const char* placement = rows                 ? "in two facing rows along a table (the bins at its ends)"
+                          : ring               ? "evenly spaced on a circle around one shared centre"
+                          : params.robots == 2 ? "facing each other across a table"
+                                               : "in a square facing the centre";
+  const char* start = params.start == StartLayout::kRandom
+                          ? "random start in the shared workspace"
+                      : ring ? "cross start (every cube starts across the ring from its bin's robot)"
+                             : "cross start (every cube starts away from its bin's robot and must be handed over)";
+  world.description = std::string(paper ? "Sorting (DaSH paper): " : "Sorting: ") + std::to_string(params.robots) +
+                      " UR5e + Hand-E robots " + placement + " sort " + std::to_string(params.cubes) + " cubes of " +
+                      std::to_string(params.classes) + " colour classes into their bins; " + start +
+                      "; generated by `dashbed gen sort " + layout_option + "--robots " + std::to_string(params.robots) +
+                      " --cubes " + std::to_string(params.cubes) + " --classes " + std::to_string(params.classes) +
+                      " --start " + layout + " --seed " + std::to_string(params.seed) + "`.";
   return world;
 }
 

@@ -61,19 +61,20 @@ StartLayout parseStartLayout(const std::string& text);
 enum class RobotLayout {
   kPaper,  ///< the paper's: 2 robots facing each other, or 4 in a square facing the centre
   kRows,   ///< 2..8 robots (even) in two facing rows along a long table, bins at its two ends
+  kRing,   ///< 3..6 robots evenly spaced on a circle, facing one shared centre
 };
 
-/// "paper" or "rows".
+/// "paper", "rows" or "ring".
 std::string toString(RobotLayout layout);
-/// Parses "paper" or "rows"; throws std::invalid_argument otherwise.
+/// Parses "paper", "rows" or "ring"; throws std::invalid_argument otherwise.
 RobotLayout parseRobotLayout(const std::string& text);
 
 /// Parameters of the sorting scenario.
 struct SortingParams {
-  int robots = 2;   ///< paper layout: 2 or 4; rows: even, 2..8
+  int robots = 2;   ///< paper layout: 2 or 4; rows: even, 2..8; ring: 3..6
   int cubes = 4;    ///< number of 0.04 m cubes, >= 1; the start zones bound it (see generateSorting)
   int classes = 4;  ///< 1..4 colour classes (red, green, blue, yellow); exactly 4 with 4 robots
-                    ///< in the paper layout
+                    ///< in the paper layout, at most one per robot in a ring
   StartLayout start = StartLayout::kCross;
   std::uint64_t seed = 1;
   RobotLayout layout = RobotLayout::kPaper;
@@ -89,7 +90,12 @@ struct SortingParams {
 /// at y = 0.7 facing -y; the red and blue bins stand beyond the first column (owned by r0 and
 /// r1), green and yellow beyond the last (r(n-1) and r(n-2)). A cross start puts a cube in
 /// front of the robot of the other end column and the other row, so it travels the table's
-/// length from hand to hand; a random start anywhere on the strip between the rows. Cubes stand on distinct cells of a lattice in the start
+/// length from hand to hand; a random start anywhere on the strip between the rows.
+/// Ring: r0 at (-0.75, 0) facing +x, the others 360/n degrees apart counter-clockwise, all
+/// facing the centre; robot k < classes owns class k, its bin beside it on its left as in the
+/// square. Cubes start in the disc of radius 0.35 m around the centre, each robot's zone the
+/// part nearest to it (by angle); a cross start puts a cube in the zone of the robot across the
+/// ring from its bin's robot. Cubes stand on distinct cells of a lattice in the start
 /// zones, jittered so that centres stay at least kMinCubeSpacing apart, with yaw in
 /// [-pi/4, pi/4). Throws std::invalid_argument (saying how many cubes fit) for bad parameters.
 core::World generateSorting(const SortingParams& params);

@@ -137,6 +137,20 @@ TEST_CASE("six robots in two rows hand every cube along the table", "[planner][d
   CHECK(busy.size() == 6);
 }
 
+TEST_CASE("five robots in a ring hand cubes across their shared centre", "[planner][dash]") {
+  // cross start in a ring: each cube starts in front of the robot across from its bin's robot
+  const core::LoadedWorld world =
+      core::validateWorld(tools::generateSorting({5, 5, 4, tools::StartLayout::kCross, 3, tools::RobotLayout::kRing}));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  int handoffs = 0;
+  for (const core::PlanAction& a : result.plan->actions) handoffs += a.type == core::ActionType::kHandoff ? 1 : 0;
+  CHECK(handoffs >= static_cast<int>(world.world->objects.size()));
+}
+
 TEST_CASE("MM-DaSH (optimal) is never worse than greedy", "[planner][dash]") {
   const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
   const PlanResult greedy = solve(world, testSettings(Method::kGreedy));

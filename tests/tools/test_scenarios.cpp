@@ -6,6 +6,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <numbers>
 #include <set>
 #include <string>
 
@@ -85,11 +86,12 @@ TEST_CASE("ScenarioRng is portable and in range", "[scenarios]") {
 
 TEST_CASE("generators are deterministic and seed-dependent", "[scenarios]") {
   for (StartLayout start : {StartLayout::kCross, StartLayout::kRandom}) {
-    for (int robots : {2, 4}) {
+    for (int robots : {2, 4, 5}) {
       SortingParams p;
       p.robots = robots;
       p.cubes = 8;
       p.start = start;
+      if (robots == 5) p.layout = RobotLayout::kRing;
       INFO("robots " << robots << " start " << toString(start));
       CHECK(yamlOf(p) == yamlOf(p));
       SortingParams q = p;
@@ -138,6 +140,11 @@ TEST_CASE("generated worlds load and pass the world validation", "[scenarios]") 
   for (int robots = 2; robots <= 8; robots += 2) {
     for (StartLayout start : {StartLayout::kCross, StartLayout::kRandom}) {
       roundTrip(generateSorting({robots, 2 * robots, 4, start, 2, RobotLayout::kRows}));
+    }
+  }
+  for (int robots = 3; robots <= 6; ++robots) {
+    for (StartLayout start : {StartLayout::kCross, StartLayout::kRandom}) {
+      roundTrip(generateSorting({robots, 2 * robots, std::min(robots, 4), start, 2, RobotLayout::kRing}));
     }
   }
   for (int objects = 2; objects <= 12; objects += 2) {
@@ -224,6 +231,39 @@ TEST_CASE("sorting in rows: cross starts every cube at the far end of the table"
     // robots face across the table; every start and goal is within some robot's reach
     for (const auto& robot : dut.robots) {
       CHECK(robot.X_WBase.linear().col(0).y() * robot.X_WBase.translation().y() == Approx(-0.7));
+    }
+    CHECK_NOTHROW(core::validateWorld(dut));
+  }
+}
+
+TEST_CASE("sorting in a ring: robots face one centre, cross starts every cube across the ring", "[scenarios]") {
+  for (int robots = 3; robots <= 6; ++robots) {
+    const int classes = std::min(robots, 4);
+    const core::World dut = generateSorting({robots, 2 * robots, classes, StartLayout::kCross, 5, RobotLayout::kRing});
+    INFO(dut.name);
+    CHECK(dut.name == "sort_" + std::to_string(robots) + "r_" + std::to_string(2 * robots) + "c_ring_cross_s5");
+    REQUIRE(dut.robots.size() == static_cast<std::size_t>(robots));
+    // evenly spaced on the circle of radius 0.75 m, each facing the centre
+    for (int k = 0; k < robots; ++k) {
+      const Eigen::Vector2d p = xy(dut.robots[k].X_WBase);
+      CHECK(p.norm() == Approx(0.75).margin(1e-6));
+      const Eigen::Vector2d next = xy(dut.robots[(k + 1) % robots].X_WBase);
+      CHECK((next - p).norm() == Approx(1.5 * std::sin(std::numbers::pi / robots)).margin(1e-5));
+      CHECK(dut.robots[k].X_WBase.linear().col(0).head<2>().dot(-p.normalized()) == Approx(1.0));
+    }
+    // robot k owns class k, its bin nearest to it
+    const char* names[] = {"red", "green", "blue", "yellow"};
+    for (int c = 0; c < classes; ++c) CHECK(nearestRobot(dut, xy(fixtureNamed(dut, std::string("bin_") + names[c]).X_WF)) == c);
+    CHECK(minCentreSpacing(dut) >= kMinCubeSpacing - 1e-12);
+    for (const auto& cube : dut.objects) {
+      const Eigen::Vector2d p = xy(cube.X_WO);
+      CHECK(p.norm() <= 0.35 + 0.015);
+      const int owner = nearestRobot(dut, xy(fixtureNamed(dut, "bin_" + cube.object_class).X_WF));
+      const int across = (owner + robots / 2) % robots;
+      INFO(cube.name << " owner r" << owner);
+      // in the zone of the robot across (the nearest one, up to the cell's jitter)
+      const double nearest = (xy(dut.robots[nearestRobot(dut, p)].X_WBase) - p).norm();
+      CHECK((xy(dut.robots[across].X_WBase) - p).norm() <= nearest + 0.03);
     }
     CHECK_NOTHROW(core::validateWorld(dut));
   }
@@ -336,7 +376,14 @@ TEST_CASE("invalid parameters throw with a clear message", "[scenarios]") {
                     Contains("robots in rows must be even, 2..8"));
   CHECK_THROWS_WITH(generateSorting({10, 4, 4, StartLayout::kCross, 1, RobotLayout::kRows}),
                     Contains("robots in rows must be even, 2..8"));
-  CHECK_THROWS_WITH(parseRobotLayout("ring"), Contains("'paper' or 'rows'"));
+  CHECK_THROWS_WITH(generateSorting({2, 4, 2, StartLayout::kCross, 1, RobotLayout::kRing}),
+                    Contains("robots in a ring must be 3..6, got 2"));
+  CHECK_THROWS_WITH(generateSorting({7, 4, 4, StartLayout::kCross, 1, RobotLayout::kRing}),
+                    Contains("robots in a ring must be 3..6, got 7"));
+  CHECK_THROWS_WITH(generateSorting({3, 4, 4, StartLayout::kCross, 1, RobotLayout::kRing}),
+                    Contains("at most one class per robot, got 4 classes"));
+  CHECK(parseRobotLayout("ring") == RobotLayout::kRing);
+  CHECK_THROWS_WITH(parseRobotLayout("circle"), Contains("'paper', 'rows' or 'ring'"));
 }
 
 }  // namespace dashbed::tools
