@@ -171,6 +171,19 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
   updatePlacementOrder();
   const bool holding = std::any_of(history.robots.begin(), history.robots.end(),
                                    [](const TransitionHistory::RobotState& r) { return r.object >= 0; });
+  const auto waits_for_others = [&](int o) {  // an object whose goal needs another placed first
+    return std::any_of(placed_before_[o].begin(), placed_before_[o].end(), [&](int first) {
+      return history.objects[first].place != ObjectPlace::kGoal;
+    });
+  };
+  // in a sequential history a second object goes on the move only for an object in hand that
+  // must wait for it (a shelf item whose pick sweeps over the start of one that goes in after
+  // it): an object in hand that could go on but finds no way is a dead end, not a reason to
+  // start on another (the search would order every step after it before finding out)
+  const bool second_pick = !history.sequential || std::all_of(history.robots.begin(), history.robots.end(),
+                                                              [&](const TransitionHistory::RobotState& r) {
+                                                                return r.object < 0 || waits_for_others(r.object);
+                                                              });
   std::vector<Candidate> result;
   for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = ts.hyperarcs()[h];
@@ -180,14 +193,12 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     const TransitionHistory::RobotState& robot = history.robots[arc.robot];
     // after the others: an object whose goal needs another placed first, and in a sequential
     // history a second object on the move
-    const bool waits = std::any_of(placed_before_[o].begin(), placed_before_[o].end(), [&](int first) {
-      return history.objects[first].place != ObjectPlace::kGoal;
-    }) || (history.sequential && arc.kind == TransitionKind::kPick && holding);
+    const bool waits = waits_for_others(o) || (history.sequential && arc.kind == TransitionKind::kPick && holding);
     int grasp = -1;
     Millis before = 0, after = 0;  // the object's cost to go before and after the transition
     switch (arc.kind) {
       case TransitionKind::kPick:
-        if (object.place != ObjectPlace::kStart || robot.object != -1) continue;
+        if (object.place != ObjectPlace::kStart || robot.object != -1 || !second_pick) continue;
         before = costToGo(o, ts.objectRestingVertex(o));
         after = costToGo(o, ts.holdingVertex(arc.robot, o));
         if (after == kUnreachable) continue;
@@ -235,9 +246,10 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
   });
 }
 
-bool HyperpathSearch::homeReachable(int robot, const core::ArmConfig& q) {
-  const core::ArmConfig& home = graph_->world().world->robots[static_cast<std::size_t>(robot)].home;
-  return q == home || graph_->move(robot, -1, -1, q, home, final_occupancy_) != nullptr;
+bool HyperpathSearch::restReachable(int robot, const core::ArmConfig& q) {
+  const std::optional<IdlePose> around = isSequential(mode_) ? std::optional(idlePose()) : std::nullopt;
+  const core::ArmConfig& rest = graph_->idleConfiguration(robot, around.value_or(IdlePose::kHome));
+  return q == rest || graph_->move(robot, -1, -1, q, rest, final_occupancy_, around) != nullptr;
 }
 
 signed char& HyperpathSearch::usableEntry(int transition) const {
@@ -253,7 +265,7 @@ bool HyperpathSearch::usable(int transition) {
   const TransitionSample& sample = graph_->transition(transition).sample;
   if (sample.kind != TransitionKind::kPlace) return true;
   signed char& known = usableEntry(transition);
-  if (known < 0) known = homeReachable(sample.motions[0].robot, sample.motions[0].end()) ? 1 : 0;
+  if (known < 0) known = restReachable(sample.motions[0].robot, sample.motions[0].end()) ? 1 : 0;
   return known == 1;
 }
 

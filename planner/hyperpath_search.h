@@ -132,12 +132,14 @@ class HyperpathSearch {
   /// cost to go), or away from it out of a hand that cannot place it (placeBlocked) to a robot
   /// that has not held it before.
   bool handoffAllowed(const TransitionHistory& history, const TransitionHyperarc& arc) const;
-  /// `robot` can go home from `q` once every object is where the plan leaves it (the moves of
-  /// the current round's roadmaps).
-  bool homeReachable(int robot, const core::ArmConfig& q);
-  /// A transition the plan can use: a place only when its robot can go home from where the
-  /// place leaves it (a robot placing into a shelf slot right in front of it may end in a pose
-  /// the roadmap cannot bring back); picks and handoffs always. Asks the roadmap once per
+  /// `robot` can go to where it rests after a place from `q` once every object is where the
+  /// plan leaves it (the moves of the current round's roadmaps): home, or in a sequential query
+  /// where it waits, clear of the other robots waiting (a place it cannot leave would end every
+  /// history through it without a final move, after the search has ordered all other steps).
+  bool restReachable(int robot, const core::ArmConfig& q);
+  /// A transition the plan can use: a place only when its robot can get to where it rests from
+  /// where the place leaves it (restReachable; a robot placing into a shelf slot right in front
+  /// of it may end in a pose the roadmap cannot bring back); picks and handoffs always. Asks the roadmap once per
   /// round and transition, when the search first applies it.
   bool usable(int transition);
   /// A place that usable() found unusable this round. Asks no roadmap: the deadlock check and
