@@ -1,6 +1,7 @@
 // The DaSH planner's longer runs (label "long"): the shelving search with its scheduling
 // constraints, shelving end to end, three robots in a hand-written layout, six robots in rows,
-// and MM-DaSH against greedy. Iteration caps, no wall-clock budgets.
+// five in a ring, the sequential search on a crowded ring, and MM-DaSH against greedy.
+// Iteration caps, no wall-clock budgets.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -190,4 +191,29 @@ TEST_CASE("MM-DaSH runs as greedy until greedy has a plan, and is then never wor
   const std::vector<std::string> before(greedy_log.begin(), found + 1);
   REQUIRE(optimal_log.size() >= before.size());
   CHECK(std::vector<std::string>(optimal_log.begin(), optimal_log.begin() + before.size()) == before);
+}
+
+TEST_CASE("a crowded sequential task plan backtracks to the step that went wrong, not through all after it",
+          "[planner][dash]") {
+  // five robots around a crowded centre. Two ways a depth-first search used to order every
+  // other step before finding out, then run out of its budget backtracking through the last
+  // ones: a place whose robot has no way back to where it waits clear of the robots waiting
+  // (the history fails only at its final move), and a robot holding an object it has no way to
+  // hand on, while the search starts on other objects instead of taking back that pick.
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("ring_5r_10c.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 7);
+  SearchBudget budget;
+  budget.max_expansions = 1000;  // a sequential query's in round 1
+  for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
+    INFO("folded " << (mode == QueryMode::kSequentialFolded));
+    const SearchResult found = HyperpathSearch(graph, mode).greedy(budget);
+    REQUIRE(found.status == SearchStatus::kFound);
+    const TransitionHistory& history = *found.plan;
+    CHECK(history.steps.size() >= 20);  // 10 picks and 10 places at least
+    for (std::size_t r = 0; r < history.final_moves.size(); ++r) {
+      const core::ArmConfig& rest = graph.idleConfiguration(static_cast<int>(r), history.idle);
+      if (history.final_moves[r] != nullptr) CHECK(history.final_moves[r]->path.back() == rest);
+    }
+  }
 }

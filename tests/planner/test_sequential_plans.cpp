@@ -253,26 +253,3 @@ TEST_CASE("with idle robots folded, a sequential plan folds first, waits folded 
     }
   }
 }
-
-TEST_CASE("a crowded sequential task plan backtracks to the step that went wrong, not through all after it",
-          "[planner][dash]") {
-  // five robots around a crowded centre. Two ways a depth-first search used to order every
-  // other step before finding out, then run out of its budget backtracking through the last
-  // ones: a place whose robot has no way back to where it waits clear of the robots waiting
-  // (the history fails only at its final move), and a robot holding an object it has no way to
-  // hand on, while the search starts on other objects instead of taking back that pick.
-  Graph g(testWorldPath("ring_5r_10c.yaml"));
-  SearchBudget budget;
-  budget.max_expansions = 1000;  // a sequential query's in round 1
-  for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
-    INFO("folded " << (mode == QueryMode::kSequentialFolded));
-    const SearchResult found = HyperpathSearch(g.graph, mode).greedy(budget);
-    REQUIRE(found.status == SearchStatus::kFound);
-    const TransitionHistory& history = *found.plan;
-    CHECK(history.steps.size() >= 20);  // 10 picks and 10 places at least
-    for (std::size_t r = 0; r < history.final_moves.size(); ++r) {
-      const core::ArmConfig& rest = g.graph.idleConfiguration(static_cast<int>(r), history.idle);
-      if (history.final_moves[r] != nullptr) CHECK(history.final_moves[r]->path.back() == rest);
-    }
-  }
-}
