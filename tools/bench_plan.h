@@ -60,6 +60,7 @@ struct RunRecord {
   bool at_budget = false;             ///< solved when the budget ran out: MM-DaSH's best plan so far (anytime)
   std::optional<bool> sim_passed;     ///< unset when not simulated
   std::string sim_failure;            ///< the first failed check ("" when passed)
+  bool sim_reused = false;            ///< the result of an identical plan simulated before in this benchmark
 };
 
 struct BenchRow {

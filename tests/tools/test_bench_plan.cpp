@@ -1,5 +1,6 @@
-// The planner benchmark's writers on a small made-up result set (the planner is not run here):
-// table columns and rows, CSV that reads back, the paper lookup, the row list of the options.
+// The planner benchmark's writers on a small made-up result set: table columns and rows, CSV
+// that reads back, the paper lookup, the row list of the options; and one real row of both
+// methods, whose equal plans are simulated once.
 
 #include <algorithm>
 #include <catch2/catch.hpp>
@@ -184,6 +185,31 @@ TEST_CASE("bench plan rows follow the paper's order and its table", "[bench_plan
 
   options.methods = {"astar"};
   CHECK_THROWS_AS(benchCases(options), std::invalid_argument);
+}
+
+TEST_CASE("bench plan simulates a plan once when both methods find it", "[bench_plan]") {
+  BenchOptions options;
+  options.suites = {"sorting2"};
+  options.objects = {2};
+  options.starts = {"random"};
+  options.seeds = 2;
+  std::ostringstream progress;
+  const std::vector<BenchRow> rows = runBench(options, progress);
+  REQUIRE(rows.size() == 2);
+  REQUIRE(rows[0].scenario.method == "optimal");  // the paper's order: MM-DaSH first
+  for (const BenchRow& row : rows) {
+    REQUIRE(row.runs.size() == 2);
+    for (const RunRecord& r : row.runs) {
+      REQUIRE(r.outcome == RunOutcome::kSolved);
+      REQUIRE(r.sim_passed);
+      CHECK(*r.sim_passed);
+      CHECK(r.sim_reused == (row.scenario.method == "greedy" && r.seed == 2));
+    }
+  }
+  // seed 1: MM-DaSH finds a shorter plan than Greedy's, which is simulated too; seed 2: both
+  // find the same plan, simulated once
+  CHECK(rows[0].runs[0].makespan < rows[1].runs[0].makespan);
+  CHECK(rows[0].runs[1].makespan == rows[1].runs[1].makespan);
 }
 
 TEST_CASE("a plot marks a dashed series of a single point, which has no line to dash", "[bench_plan]") {
