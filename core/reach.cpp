@@ -3,8 +3,13 @@
 #include <algorithm>
 #include <cmath>
 #include <sstream>
+#include <tuple>
 
+#include <Eigen/Geometry>
+
+#include "core/geometry.h"
 #include "core/grasps.h"
+#include "core/ur_ik.h"
 #include "core/world_io.h"
 
 namespace dashbed::core {
@@ -103,27 +108,107 @@ void requireReachable(const World& world, const ReachMap& reach) {
 
 namespace dashbed::core {
 
-bool workspacesOverlap(const PlacedRobot& a, const PlacedRobot& b) {
-  const Eigen::Vector3d pa = a.spec->X_WBase.translation(), pb = b.spec->X_WBase.translation();
-  const Eigen::Vector3d mid = 0.5 * (pa + pb);
-  Eigen::Vector3d along = pb - pa;
-  along.z() = 0.0;
-  if (along.norm() < 1e-9) return true;  // same base position
-  along.normalize();
-  const Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(along);
-  const double top = std::max(pa.z(), pb.z());
-  const Eigen::Vector3d cube = Eigen::Vector3d::Constant(0.04);
-  for (const double height : {0.3, 0.15, 0.45}) {
-    for (const double s : {0.0, -0.1, 0.1}) {
-      for (const double t : {0.0, -0.1, 0.1}) {
-        Pose X_WO = Pose::Identity();
-        X_WO.translation() = Eigen::Vector3d(mid.x(), mid.y(), top + height) + s * along + t * across;
-        X_WO.linear() = Eigen::AngleAxisd(std::atan2(along.y(), along.x()), Eigen::Vector3d::UnitZ()).toRotationMatrix();
-        if (reachesBox(a, X_WO, cube) && reachesBox(b, X_WO, cube)) return true;
-      }
+namespace {
+
+// Handoff zone candidates: moves of the first box along and across the line between the bases
+// and up [m], nearest first (ties: lower first, then along, then across, negative first).
+std::vector<Eigen::Vector3d> handoffShifts() {
+  std::vector<Eigen::Vector3d> shifts;
+  for (int i = -3; i <= 3; ++i) {
+    for (int j = -4; j <= 4; ++j) {
+      for (int k = -5; k <= 2; ++k) shifts.emplace_back(0.1 * i, 0.1 * j, 0.15 * k);
     }
   }
-  return false;
+  std::stable_sort(shifts.begin(), shifts.end(), [](const Eigen::Vector3d& x, const Eigen::Vector3d& y) {
+    return std::tuple(x.norm(), x.z(), x.x(), x.y()) < std::tuple(y.norm(), y.z(), y.x(), y.y());
+  });
+  return shifts;
+}
+
+// The box of width `width` around the segment from p to q.
+Box segmentBox(const Eigen::Vector3d& p, const Eigen::Vector3d& q, double width) {
+  Box box;
+  box.X_WB = Pose::Identity();
+  box.X_WB.translation() = 0.5 * (p + q);
+  const Eigen::Vector3d d = q - p;
+  box.X_WB.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), d).toRotationMatrix();
+  box.size = Eigen::Vector3d(d.norm(), width, width);
+  return box;
+}
+
+// A robot cannot grasp anything farther than this from its base [m]: the UR5e's reach of
+// 0.85 m (shoulder to flange, ../shared/reference/ur5e_hande.yaml) plus its shoulder height and
+// the Hand-E's length, rounded up. Only spares IK calls that would fail.
+constexpr double kGraspBound = 1.2;
+
+}  // namespace
+
+std::optional<HandoffZone> handoffZone(const World& world, const PlacedRobot& a, const PlacedRobot& b,
+                                       const HandoffShape& shape) {
+  const Eigen::Vector3d pa = a.spec->X_WBase.translation(), pb = b.spec->X_WBase.translation();
+  // the candidates' order depends on the direction of the line: take it one way for both orders
+  if (std::tuple(pb.x(), pb.y(), pb.z()) < std::tuple(pa.x(), pa.y(), pa.z())) return handoffZone(world, b, a, shape);
+  HandoffZone first;
+  first.mid = 0.5 * (pa + pb);
+  first.top = std::max(pa.z(), pb.z());
+  Eigen::Vector3d along = pb - pa;
+  along.z() = 0.0;
+  along = along.norm() > 1e-9 ? along.normalized() : Eigen::Vector3d::UnitX();  // bases at one spot
+  const Eigen::Vector3d across = Eigen::Vector3d::UnitZ().cross(along);
+  const Eigen::Matrix3d R_WZ = Eigen::AngleAxisd(std::atan2(along.y(), along.x()), Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const double middle = 0.5 * (shape.min_height + shape.max_height);
+  const Eigen::Vector3d cube = Eigen::Vector3d::Constant(0.04);
+  constexpr double kFixtureClearance = 0.03;
+  constexpr double kArmWidth = 0.12;  // of the corridor from each shoulder to the zone: the upper arm's 0.12 m
+  const Eigen::Vector3d up(0.0, 0.0, kUr5eDh.d1);
+  const Eigen::Vector3d shoulder_a = a.spec->X_WBase * up, shoulder_b = b.spec->X_WBase * up;
+  const auto blocked = [&](const Box& box) {
+    return std::any_of(world.fixtures.begin(), world.fixtures.end(), [&](const FixtureSpec& f) {
+      return std::any_of(f.boxes.begin(), f.boxes.end(), [&](const Box& part) { return boxesOverlap(box, part); });
+    });
+  };
+  const Eigen::Vector3d half(shape.spread, shape.spread, 0.5 * (shape.max_height - shape.min_height));
+  const double bound = kGraspBound + half.norm();
+  // a zone whose middle is behind a robot (against its base's x axis, the way the generated
+  // worlds face their robots) is taken only when no other fits
+  const auto behind = [&](const Eigen::Vector3d& centre) {
+    return (centre - pa).dot(a.spec->X_WBase.linear().col(0)) < -1e-9 ||
+           (centre - pb).dot(b.spec->X_WBase.linear().col(0)) < -1e-9;
+  };
+  const auto fits = [&](const HandoffZone& zone, const Eigen::Vector3d& centre) {
+    if ((centre - pa).norm() > bound || (centre - pb).norm() > bound) return false;
+    Box box;
+    box.X_WB = Pose::Identity();
+    box.X_WB.linear() = R_WZ;
+    box.X_WB.translation() = centre;
+    box.size = 2.0 * (half + Eigen::Vector3d::Constant(kFixtureClearance));
+    if (blocked(box) || blocked(segmentBox(shoulder_a, centre, kArmWidth)) ||
+        blocked(segmentBox(shoulder_b, centre, kArmWidth))) {
+      return false;
+    }
+    for (const double height : {middle, shape.min_height, shape.max_height}) {
+      for (const double s : {0.0, -shape.spread, shape.spread}) {
+        for (const double t : {0.0, -shape.spread, shape.spread}) {
+          Pose X_WO = Pose::Identity();
+          X_WO.translation() = Eigen::Vector3d(zone.mid.x(), zone.mid.y(), zone.top + height) + s * along + t * across;
+          X_WO.linear() = R_WZ;
+          if (reachesBox(a, X_WO, cube) && reachesBox(b, X_WO, cube)) return true;
+        }
+      }
+    }
+    return false;
+  };
+  static const std::vector<Eigen::Vector3d> shifts = handoffShifts();
+  for (const bool behind_pass : {false, true}) {
+    for (const Eigen::Vector3d& shift : shifts) {
+      HandoffZone zone = first;
+      zone.mid += shift.x() * along + shift.y() * across;
+      zone.top += shift.z();
+      const Eigen::Vector3d centre(zone.mid.x(), zone.mid.y(), zone.top + middle);
+      if (behind(centre) == behind_pass && fits(zone, centre)) return zone;
+    }
+  }
+  return std::nullopt;
 }
 
 }  // namespace dashbed::core

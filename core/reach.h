@@ -5,6 +5,7 @@
 // least one parallel-jaw grasp of the object there (core/grasps.h). Collisions are not
 // considered here; the planner checks them.
 
+#include <optional>
 #include <vector>
 
 #include "core/robot_set.h"
@@ -40,9 +41,34 @@ void requireReachable(const World& world, const ReachMap& reach);
 
 namespace dashbed::core {
 
-/// True when two robots can both grasp a cube held in the air between them: some pose near
-/// the middle of their bases (a small grid of points 0.15-0.45 m above the higher base) is
-/// reachable by both. This is the handoff overlap test of the task-space hypergraph.
-bool workspacesOverlap(const PlacedRobot& a, const PlacedRobot& b);
+/// The box in which two robots hand an object over, in the frame of the line between their
+/// bases: object centres within `spread` of the zone's middle along and across the line, from
+/// `min_height` to `max_height` above the zone's reference height.
+struct HandoffShape {
+  double min_height = 0.15;  ///< [m]
+  double max_height = 0.45;  ///< [m]
+  double spread = 0.10;      ///< [m]
+};
+
+/// Where two robots hand objects over: the HandoffShape box around `mid`, its heights counted
+/// from `top`.
+struct HandoffZone {
+  Eigen::Vector3d mid = Eigen::Vector3d::Zero();  ///< horizontal middle of the zone (z unused)
+  double top = 0.0;                               ///< [m] the heights' reference
+};
+
+/// The handoff zone of two robots: the first box, of a fixed list, that no fixture comes
+/// within 3 cm of, with no fixture on the straight lines (0.12 m wide) from the robots'
+/// shoulders to its centre, and in which both can grasp a 40 mm cube (at one of its centre, the
+/// middles of its faces and edges, or its corners: 27 points). The list starts with the box over the
+/// midpoint of the bases, heights counted from the higher base, and goes on with that box moved
+/// along and across the line between the bases by up to 0.3 and 0.4 m and up or down by up to
+/// 0.3 and 0.75 m, nearest first, boxes whose middle is behind either robot (against its
+/// base's x axis) after all others: so a post between the robots, a base on a riser or one
+/// hanging from a beam move the zone to where a handoff can happen. std::nullopt when no box
+/// qualifies (the robots cannot hand over). The task-space hypergraph's handoff test and the
+/// handoff sampler's poses; symmetric in the two robots.
+std::optional<HandoffZone> handoffZone(const World& world, const PlacedRobot& a, const PlacedRobot& b,
+                                       const HandoffShape& shape = {});
 
 }  // namespace dashbed::core

@@ -122,10 +122,10 @@ TaskSpaceHypergraph TaskSpaceHypergraph::fromWorld(const core::World& world, con
   allowed.objects = static_cast<int>(world.objects.size());
   allowed.reach = reach;
   allowed.handoff.assign(robots.size(), std::vector<bool>(robots.size(), false));
-  // the overlap test asks for a pose both can grasp, a symmetric property: test each pair once
+  // a handoff zone is a symmetric property: ask once per pair
   for (std::size_t a = 0; a < robots.size(); ++a) {
     for (std::size_t b = a + 1; b < robots.size(); ++b) {
-      const bool overlap = core::workspacesOverlap(robots[a], robots[b]);
+      const bool overlap = core::handoffZone(world, robots[a], robots[b]).has_value();
       allowed.handoff[a][b] = overlap;
       allowed.handoff[b][a] = overlap;
     }

@@ -103,8 +103,8 @@ class TaskSpaceHypergraph {
 
   /// The hypergraph of a world: robot and object names from the world, picks and places from
   /// `reach` (the planner passes placementReach: places by the robots reaching each object's
-  /// goal slot), handoffs between robots whose workspaces overlap
-  /// (core::workspacesOverlap, a symmetric test made once per pair). Throws
+  /// goal slot), handoffs between robots that have a handoff zone (core::handoffZone, symmetric:
+  /// asked once per pair). Throws
   /// std::invalid_argument when `reach` does not match the world.
   static TaskSpaceHypergraph fromWorld(const core::World& world, const core::RobotSet& robots,
                                        const core::ReachMap& reach);

@@ -533,21 +533,17 @@ std::optional<TransitionSample> placeSample(Context& c, const Part& p) {
 
 /// The horizontal line between the giver's and the receiver's bases.
 struct HandoffFrame {
-  Vector3d mid;     // midpoint of the bases
   Vector3d along;   // horizontal unit vector, giver -> receiver
   Vector3d across;  // kUp x along
-  double top;       // height of the higher base [m]
 };
 
 HandoffFrame handoffFrame(const core::World& world, int giver, int receiver) {
   const Vector3d p_g = world.robots[static_cast<std::size_t>(giver)].X_WBase.translation();
   const Vector3d p_r = world.robots[static_cast<std::size_t>(receiver)].X_WBase.translation();
   HandoffFrame frame;
-  frame.mid = 0.5 * (p_g + p_r);
   frame.along = Vector3d(p_r.x() - p_g.x(), p_r.y() - p_g.y(), 0.0);
   frame.along = frame.along.norm() > 1e-9 ? frame.along.normalized() : Vector3d::UnitX();  // bases at one spot
   frame.across = kUp.cross(frame.along);
-  frame.top = std::max(p_g.z(), p_r.z());
   return frame;
 }
 
@@ -723,6 +719,18 @@ std::vector<TransitionSample> TransitionSampler::place(int hyperarc, const Grasp
   return samples;
 }
 
+const std::optional<core::HandoffZone>& TransitionSampler::handoffZone(int a, int b) {
+  const auto key = std::minmax(a, b);
+  auto it = zones_.find(key);
+  if (it == zones_.end()) {
+    const core::RobotSet& robots = *world_->robots;
+    it = zones_.emplace(key, core::handoffZone(*world_->world, robots[static_cast<std::size_t>(key.first)],
+                                               robots[static_cast<std::size_t>(key.second)], settings_.handoff))
+             .first;
+  }
+  return it->second;
+}
+
 std::vector<Grasp> TransitionSampler::handoffGrasps(int object, const Grasp& giver) const {
   return receiverGrasps(world_->world->objects.at(static_cast<std::size_t>(object)).size, giver,
                         scene_->settings().margin);
@@ -736,19 +744,20 @@ std::vector<TransitionSample> TransitionSampler::handoff(int hyperarc, const Gra
   const Arm receiver_arm = armOf(*world_, *scene_, arc.receiver);
   const Part giver{hyperarc, &giver_arm, arc.object, Pose::Identity(), giver_grasp};
   const Part receiver{hyperarc, &receiver_arm, arc.object, Pose::Identity(), Grasp{}};
-  const HandoffFrame frame = handoffFrame(c.world, arc.robot, arc.receiver);
   const std::vector<Grasp> grasps = handoffGrasps(arc.object, giver_grasp);
   std::vector<TransitionSample> samples;
-  if (grasps.empty()) return samples;
+  const std::optional<core::HandoffZone>& zone = handoffZone(arc.robot, arc.receiver);
+  if (grasps.empty() || !zone) return samples;
+  const HandoffFrame frame = handoffFrame(c.world, arc.robot, arc.receiver);
+  const core::HandoffShape& shape = settings_.handoff;
   for (int draw = 0; draw < kDrawsPerSample * count && static_cast<int>(samples.size()) < count; ++draw) {
     // one draw: the object's centre, the first orientation and the first receiver grasp tried
     const double u_along = uniform(rng), u_across = uniform(rng), u_height = uniform(rng);
     const int first_orientation = indexOf(uniform(rng), kHandoffOrientations);
     const auto first_grasp = static_cast<std::size_t>(indexOf(uniform(rng), static_cast<int>(grasps.size())));
-    Vector3d p_WO = frame.mid + (2 * u_along - 1) * settings_.handoff_spread * frame.along +
-                    (2 * u_across - 1) * settings_.handoff_spread * frame.across;
-    p_WO.z() = frame.top + settings_.handoff_min_height +
-               u_height * (settings_.handoff_max_height - settings_.handoff_min_height);
+    Vector3d p_WO = zone->mid + (2 * u_along - 1) * shape.spread * frame.along +
+                    (2 * u_across - 1) * shape.spread * frame.across;
+    p_WO.z() = zone->top + shape.min_height + u_height * (shape.max_height - shape.min_height);
     if (auto sample = handoffAt(c, frame, giver, receiver, grasps, p_WO, first_orientation, first_grasp)) {
       samples.push_back(std::move(*sample));
     }

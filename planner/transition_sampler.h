@@ -30,6 +30,7 @@
 // transition while those sites are empty.
 
 #include <cstdint>
+#include <map>
 #include <memory>
 #include <optional>
 #include <random>
@@ -37,6 +38,7 @@
 #include <vector>
 
 #include "core/plan.h"
+#include "core/reach.h"
 #include "core/world_loader.h"
 #include "planner/collision_checker.h"
 #include "planner/object_sites.h"
@@ -112,9 +114,7 @@ struct TransitionSettings {
   double peak_factor = 1.5;          ///< peak / average joint speed of the simulator's cubic Hermite
   double max_step_jump = 0.3;        ///< largest joint change between keys of a line [rad]
   double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
-  double handoff_min_height = 0.15;  ///< handoff object centre above the higher base [m], lowest
-  double handoff_max_height = 0.45;  ///< ... highest
-  double handoff_spread = 0.10;      ///< handoff object centre within this of the midpoint, along and across [m]
+  core::HandoffShape handoff;        ///< where handoff poses are drawn (core::handoffZone)
 };
 
 class TransitionSampler {
@@ -132,9 +132,10 @@ class TransitionSampler {
   std::vector<TransitionSample> place(int hyperarc, const Grasp& held);
 
   /// Up to `count` handoff samples of handoff hyperarc `hyperarc` for a giver holding the
-  /// object in `giver_grasp`: handoff poses drawn from `rng` (object centre near the middle of
-  /// the two bases, between handoff_min_height and handoff_max_height, orientation such that
-  /// the giver's IK exists), receiver grasps enumerated. Makes at most 20 count draws.
+  /// object in `giver_grasp`: handoff poses drawn from `rng` (object centre in the two robots'
+  /// handoff zone, core::handoffZone with the `handoff` shape; orientation such that the
+  /// giver's IK exists), receiver grasps enumerated. Makes at most 20 count draws, none when
+  /// the robots have no handoff zone.
   std::vector<TransitionSample> handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng, int count);
 
   /// The grasps a receiver may take of `object` from a giver holding it in `giver`: every
@@ -150,6 +151,10 @@ class TransitionSampler {
   const ObjectSites* sites_;
   TransitionSettings settings_;
   std::unique_ptr<CollisionChecker> checker_;  // the one checker of every sample's checks
+  std::map<std::pair<int, int>, std::optional<core::HandoffZone>> zones_;  // robot pairs, lower index first
+
+  /// The handoff zone of robots a and b (either order), computed once.
+  const std::optional<core::HandoffZone>& handoffZone(int a, int b);
 };
 
 }  // namespace dashbed::planner

@@ -60,7 +60,7 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
   std::vector<std::pair<int, int>> handoff_pairs;
   for (std::size_t a = 0; a < robots.size(); ++a) {
     for (std::size_t b = a + 1; b < robots.size(); ++b) {
-      if (core::workspacesOverlap(robots[a], robots[b])) handoff_pairs.emplace_back(a, b);
+      if (core::handoffZone(world, robots[a], robots[b])) handoff_pairs.emplace_back(a, b);
     }
   }
 

@@ -16,6 +16,7 @@
 #include "core/geometry.h"
 #include "core/grasps.h"
 #include "core/kinematics.h"
+#include "core/reach.h"
 
 namespace dashbed::tools {
 namespace {
@@ -884,14 +885,19 @@ class ScriptPlanner {
     if (receiver.held >= 0) {
       parser_.fail(s.object_token, receiver_name + " already holds " + objectName(receiver.held) + " and cannot receive " + spec.name);
     }
-    // the handoff point: midway between the bases, handoff_height above the higher one
+    // the handoff point: the middle of the robots' handoff zone (the planner's), handoff_height up
     const Eigen::Vector3d p_g = world_.robots[g].X_WBase.translation(), p_r = world_.robots[r].X_WBase.translation();
     Eigen::Vector3d along = p_r - p_g;
     along.z() = 0.0;
     if (along.norm() < 1e-6) parser_.fail(s.verb_token, giver_name + " and " + receiver_name + " stand at the same place");
     along.normalize();
     const Eigen::Vector3d across = kUp.cross(along);
-    const Eigen::Vector3d p_WO((p_g.x() + p_r.x()) / 2, (p_g.y() + p_r.y()) / 2, std::max(p_g.z(), p_r.z()) + settings_.handoff_height);
+    const std::optional<core::HandoffZone> zone = core::handoffZone(world_, *robots_[g].placed, *robots_[r].placed);
+    if (!zone) {
+      parser_.fail(s.verb_token, giver_name + " and " + receiver_name +
+                                     " have no handoff zone: no place near them both reach, clear of the fixtures");
+    }
+    const Eigen::Vector3d p_WO(zone->mid.x(), zone->mid.y(), zone->top + settings_.handoff_height);
     const std::string where = "at " + vec(p_WO) + " m";
 
     // Geometry (giver top-grasps, object frame O): the giver turns its approach axis

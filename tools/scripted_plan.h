@@ -51,7 +51,7 @@ struct ScriptSettings {
   double gripper_dwell = 0.6;        ///< wait after each gripper command [s]
   double safe_height = 0.20;         ///< height of transit via points above the support [m]
   double drop_height = 0.002;        ///< release height of a placed object above its support [m]
-  double handoff_height = 0.30;      ///< handoff object centre above the higher base [m]
+  double handoff_height = 0.30;      ///< handoff object centre above the handoff zone's reference height [m] (core::handoffZone)
   double max_step_jump = 0.3;        ///< largest joint change between Cartesian waypoints [rad]
   double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
   double finger_clearance = 0.002;   ///< required gap between the grippers in a handoff [m]

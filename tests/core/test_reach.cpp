@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <optional>
 #include <string>
 
 #include "core/grasps.h"
@@ -31,7 +32,47 @@ TEST_CASE("the default world is reachable: cross starts need a handoff", "[reach
     CHECK(dut.reach.goal[o].size() == 1);
     CHECK(dut.reach.start[o] != dut.reach.goal[o]);
   }
-  CHECK(workspacesOverlap((*dut.robots)[0], (*dut.robots)[1]));
+  CHECK(handoffZone(*dut.world, (*dut.robots)[0], (*dut.robots)[1]));
+}
+
+TEST_CASE("a handoff zone starts over the midpoint of the bases, heights from the higher base", "[reach]") {
+  const LoadedWorld dut = loadWorld(kRoot + "/worlds/default.yaml");
+  const std::optional<HandoffZone> zone = handoffZone(*dut.world, (*dut.robots)[0], (*dut.robots)[1]);
+  REQUIRE(zone);
+  CHECK(zone->mid.x() == Approx(0.0).margin(1e-12));  // bases at x = -0.7 and 0.7
+  CHECK(zone->mid.y() == Approx(0.0).margin(1e-12));
+  CHECK(zone->top == 0.75);
+
+  // 2.2 m apart, nothing between them is in reach of both
+  World apart = *dut.world;
+  apart.robots[1].X_WBase.translation().x() = 1.5;
+  const RobotSet robots(apart);
+  CHECK_FALSE(handoffZone(apart, robots[0], robots[1]));
+}
+
+TEST_CASE("a post between the robots moves their handoff zone in front of it, in either order", "[reach]") {
+  const LoadedWorld dut = loadWorld(kRoot + "/tests/planner/worlds/post_between.yaml");
+  const std::optional<HandoffZone> zone = handoffZone(*dut.world, (*dut.robots)[0], (*dut.robots)[1]);
+  REQUIRE(zone);
+  // the post stands at (0, -0.45), 0.16 m square, on the line between the bases; the zone
+  // (0.1 m either side of its middle, 3 cm clearance) keeps clear of it
+  const HandoffShape shape;
+  CHECK(std::abs(zone->mid.y() - -0.45) >= 0.08 + shape.spread + 0.03 - 1e-9);
+  CHECK(zone->top == 0.75);
+  const std::optional<HandoffZone> reverse = handoffZone(*dut.world, (*dut.robots)[1], (*dut.robots)[0]);
+  REQUIRE(reverse);
+  CHECK(reverse->mid == zone->mid);
+  CHECK(reverse->top == zone->top);
+}
+
+TEST_CASE("a base on a riser moves the handoff zone towards the robot below", "[reach]") {
+  // r0 at x = -0.65 on the table, r1 at x = 0.7 on a 0.5 m riser: over the midpoint, 0.15-0.45 m
+  // above r1's base, r0 reaches no point of the box
+  const LoadedWorld dut = loadWorld(kRoot + "/tests/planner/worlds/riser_handoff.yaml");
+  const std::optional<HandoffZone> zone = handoffZone(*dut.world, (*dut.robots)[0], (*dut.robots)[1]);
+  REQUIRE(zone);
+  CHECK(zone->mid.x() < 0.025 - 0.05);
+  CHECK(zone->top <= 1.25);
 }
 
 TEST_CASE("an object out of every robot's reach names its file, line and field", "[reach]") {

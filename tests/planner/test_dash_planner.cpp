@@ -195,8 +195,8 @@ TEST_CASE("a timeout without any task plan names the transitions that were never
   const core::LoadedWorld loaded = unchecked(std::move(world));
   PlannerSettings settings = testSettings();
   settings.max_rounds = 3;
-  settings.representation.transitions.handoff_min_height = 1.5;
-  settings.representation.transitions.handoff_max_height = 1.6;
+  settings.representation.transitions.handoff.min_height = 1.5;
+  settings.representation.transitions.handoff.max_height = 1.6;
   const PlanResult result = solve(loaded, settings);
   CHECK(result.status == PlannerStatus::kTimeout);
   CHECK_THAT(result.reason, Contains("no task plan in the representation") &&
@@ -303,6 +303,34 @@ TEST_CASE("a pick that runs into a robot standing at home is planned around with
   CHECK(plan.actions[0].type == core::ActionType::kPick);
   CHECK(plan.actions[0].robot == "r0");
   CHECK(plan.actions[1].type == core::ActionType::kHandoff);
+}
+
+TEST_CASE("robots hand over in front of a post standing between their bases", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("post_between.yaml"));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  const core::Plan& plan = *result.plan;
+  requireValidActions(plan, *world.world);
+  requireNoRobotCollision(plan, world);
+  const auto handoffs = std::count_if(plan.actions.begin(), plan.actions.end(), [](const core::PlanAction& a) {
+    return a.type == core::ActionType::kHandoff;
+  });
+  CHECK(handoffs == 2);
+}
+
+TEST_CASE("a robot on a riser and one on the table hand over every cube", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("riser_handoff.yaml"));
+  const PlanResult result = solve(world, testSettings());
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  const core::Plan& plan = *result.plan;
+  requireValidActions(plan, *world.world);
+  requireNoRobotCollision(plan, world);
+  const auto handoffs = std::count_if(plan.actions.begin(), plan.actions.end(), [](const core::PlanAction& a) {
+    return a.type == core::ActionType::kHandoff;
+  });
+  CHECK(handoffs == 4);
 }
 
 TEST_CASE("a robot standing at home over the only pick another robot can make folds out of its way", "[planner][dash]") {
