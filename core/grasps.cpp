@@ -48,4 +48,6 @@ std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance) {
   return grasps;
 }
 
+double frictionHoldMass(double friction, double grip_force, double g) { return 2.0 * friction * grip_force / g; }
+
 }  // namespace dashbed::core

@@ -39,4 +39,10 @@ struct BoxGrasp {
 /// Face pairs wider than the gripper opening minus `clearance` are left out.
 std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance = kGraspClearance);
 
+/// The heaviest object [kg] a parallel-jaw grip holds by friction alone while standing still:
+/// two pads each pressing with `grip_force` [N], Coulomb coefficient `friction` (the object's
+/// times the pads', as the simulation combines them), gravity `g` [m/s^2]: 2 friction grip_force / g.
+/// Moving it takes more (its acceleration adds to g).
+double frictionHoldMass(double friction, double grip_force, double g);
+
 }  // namespace dashbed::core

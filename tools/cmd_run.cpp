@@ -14,6 +14,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/asset_paths.h"
+#include "core/grasps.h"
+#include "core/number_text.h"
 #include "core/reach.h"
 #include "core/world_loader.h"
 #include "planner/home_check.h"
@@ -57,6 +59,11 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
   const core::World& world = *loaded.world;
   const core::RobotSet& robots = *loaded.robots;
 
+  // the heaviest each object may be for the grip to hold it by friction, standing still
+  const auto holds = [&](const core::ObjectSpec& object) {
+    return core::frictionHoldMass(object.friction * world.physics.pad_friction, world.controller.grip_force,
+                                  world.physics.gravity.norm());
+  };
   std::vector<std::pair<int, int>> handoff_pairs;
   for (std::size_t a = 0; a < robots.size(); ++a) {
     for (std::size_t b = a + 1; b < robots.size(); ++b) {
@@ -80,7 +87,8 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
                                 {"class", object.object_class},
                                 {"goal_region", region != nullptr ? region->name : ""},
                                 {"start_reached_by", start},
-                                {"goal_reached_by", goal}});
+                                {"goal_reached_by", goal},
+                                {"friction_holds_kg", holds(object)}});
     }
     out["handoff_pairs"] = nlohmann::json::array();
     for (const auto& [a, b] : handoff_pairs) out["handoff_pairs"].push_back({world.robots[a].name, world.robots[b].name});
@@ -107,6 +115,15 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
               << (region != nullptr ? region->name : "(no goal)") << " start: " << std::setw(8)
               << robotNames(world, loaded.reach.start[o]) << " goal: " << robotNames(world, loaded.reach.goal[o])
               << "\n";
+  }
+  // objects the grip cannot hold by friction even standing still: the simulation will see them slip
+  for (const auto& object : world.objects) {
+    if (object.mass > holds(object)) {
+      std::cout << "  warning: " << object.name << " (" << core::significantText(object.mass, 3)
+                << " kg) will slip: friction " << core::significantText(object.friction, 3) << " x pads "
+                << core::significantText(world.physics.pad_friction, 3) << " at a " << core::significantText(world.controller.grip_force, 4)
+                << " N grip holds at most " << core::significantText(holds(object), 3) << " kg\n";
+    }
   }
   std::cout << "\ngoals:\n";
   for (const auto& g : world.goals) {

@@ -115,6 +115,13 @@ TEST_CASE("grasps of a resting cube come from above only", "[reach]") {
   CHECK(boxGrasps(Eigen::Vector3d(0.06, 0.03, 0.04)).size() == 2);
 }
 
+TEST_CASE("a grip holds by friction what two pads pressing with the grip force carry", "[reach]") {
+  // the default world: cube friction 0.8, rubber pads 1.0, 60 N: 9.8 kg, far above a 0.1 kg cube
+  CHECK(frictionHoldMass(0.8 * 1.0, 60.0, 9.81) == Approx(9.79).margin(0.01));
+  // a slippery cube (0.3) on worn pads (0.5) at the Hand-E's least force (20 N): 0.61 kg
+  CHECK(frictionHoldMass(0.3 * 0.5, 20.0, 9.81) == Approx(0.612).margin(0.001));
+}
+
 TEST_CASE("an object too wide for the gripper says so, not that it is out of reach", "[reach]") {
   World world = parseWorldYaml(defaultWorldText(), "worlds/default.yaml");
   const auto cube = std::find_if(world.objects.begin(), world.objects.end(),
