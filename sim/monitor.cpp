@@ -681,6 +681,15 @@ Report Monitor::finish(const PlanExecutor& executor) {
     if (event.kind == "slip") continue;  // judged by the grasp and handoff checks
     failures.push_back(event.kind + " at " + fmt(event.t) + " s: " + event.detail);
   }
+  // the world's goals: every object sent to a region ends inside it, placed by the plan or not
+  for (std::size_t o = 0; o < s.world.objects.size(); ++o) {
+    const core::ObjectSpec& object = s.world.objects[o];
+    const core::Region* region = s.world.goalRegionOf(object);
+    double outside = 0.0;
+    if (region != nullptr && !insideRegion(*region, s.sim.objectPose(static_cast<int>(o)), outside)) {
+      failures.push_back("goal: " + object.name + " ends " + fmt(outside * 1e3) + " mm outside " + region->name);
+    }
+  }
   std::sort(s.events.begin(), s.events.end(), [](const ExecutionEvent& x, const ExecutionEvent& y) { return x.t < y.t; });
   report.events = s.events;
   report.execution_verdict = failures.empty() ? Verdict::kPassed : Verdict::kFailed;

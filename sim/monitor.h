@@ -11,7 +11,9 @@
 //  - place:   a settle time after release the object is at rest, inside its goal region,
 //             flat on a face within the upright tolerance, and it is still there at the end.
 //  - execution: no robot-robot or robot-scenery contact, no robot touching an object it is
-//             not manipulating, no object knocked from rest, joint tracking within its limit.
+//             not manipulating, no object knocked from rest, joint tracking within its limit,
+//             and at the end every object the world's goals send to a region is inside it
+//             (so a plan that leaves one out fails, whatever its actions did).
 // Drops, slips and knocked objects become events attributed to the action in progress.
 
 #include <memory>

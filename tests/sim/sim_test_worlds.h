@@ -4,7 +4,10 @@
 #include <numbers>
 #include <string>
 
+#include "core/asset_paths.h"
 #include "core/world.h"
+#include "core/world_io.h"
+#include "core/world_loader.h"
 
 namespace dashbed::test {
 
@@ -49,6 +52,18 @@ inline void addCube(core::World& world, const std::string& name, double x, doubl
   cube.object_class = "red";
   cube.X_WO = core::makePoseXyzYaw({x, y, 0.75 + 0.02}, yaw);
   world.objects.push_back(cube);
+}
+
+/// The default world (worlds/default.yaml) without its goals, for scripts that move one cube:
+/// with them, the run's goal check (every cube in its bin at the end) fails whatever the
+/// script's actions do.
+inline const core::LoadedWorld& defaultWorldWithoutGoals() {
+  static const core::LoadedWorld loaded = [] {
+    core::World world = core::loadWorldFile(core::defaultWorldPath());
+    world.goals.clear();
+    return core::validateWorld(std::move(world));
+  }();
+  return loaded;
 }
 
 }  // namespace dashbed::test

@@ -13,16 +13,15 @@
 #include "sim/plan_executor.h"
 #include "sim/report.h"
 #include "sim/run_plan.h"
+#include "tests/sim/sim_test_worlds.h"
 #include "tools/scripted_plan.h"
 
 using namespace dashbed;
 
 namespace {
 
-const core::LoadedWorld& defaultWorld() {
-  static const core::LoadedWorld world = core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/default.yaml");
-  return world;
-}
+// the scripts move one or two cubes: the goals of the others are left out
+const core::LoadedWorld& defaultWorld() { return test::defaultWorldWithoutGoals(); }
 
 sim::Report simulate(const std::string& script, const core::LoadedWorld& world = defaultWorld()) {
   const core::Plan plan = tools::planFromScript(world, script);
@@ -74,6 +73,24 @@ TEST_CASE("scripted handoff between two robots passes", "[sim][scripted]") {
   const auto& handoff = action(report, "handoff cube_0 from r1 to r0");
   CHECK(handoff.verdict == sim::Verdict::kPassed);
   CHECK(report.passed());
+}
+
+TEST_CASE("a run whose actions all pass fails when a cube the goals send to a bin is left out", "[sim][scripted]") {
+  const std::string script = "r1 picks cube_0; r1 hands cube_0 to r0; r0 places cube_0 in bin_red";
+  // every cube of the default world has a goal: cube_0 reaches it, the other three do not
+  core::World all = core::loadWorldFile(core::defaultWorldPath());
+  const core::LoadedWorld with_goals = core::validateWorld(all);
+  const sim::Report report = simulate(script, with_goals);
+  INFO(report.execution_failure);
+  CHECK(report.failedCount() == 0);
+  CHECK_FALSE(report.passed());
+  CHECK_THAT(report.execution_failure, Catch::Matchers::Contains("goal: cube_1 ends") &&
+                                           Catch::Matchers::Contains("outside bin_green"));
+  CHECK_THAT(report.execution_failure, !Catch::Matchers::Contains("goal: cube_0"));
+  // with cube_0's goal alone, the same run passes
+  all.goals = {core::Goal{"cube_0", "", "bin_red", {}}};
+  const core::LoadedWorld cube_0_goal = core::validateWorld(all);
+  CHECK(simulate(script, cube_0_goal).passed());
 }
 
 TEST_CASE("closing 3 cm beside the cube is a failed grasp", "[sim][scripted]") {
