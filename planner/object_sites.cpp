@@ -51,15 +51,44 @@ Eigen::Matrix3d restingOrientation(const Eigen::Matrix3d& R_WO, double yaw) {
   return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix() * R_UO;
 }
 
+/// The object's extent along the region's axes when its orientation is R_WO.
+Eigen::Vector3d footprintIn(const core::Region& region, const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size) {
+  return (region.X_WR.linear().transpose() * R_WO * size.asDiagonal()).cwiseAbs().rowwise().sum();
+}
+
 }  // namespace
 
-ObjectSites objectSites(const core::LoadedWorld& loaded) {
+bool restsIn(const core::Region& region, const core::Pose& X_WO) {
+  const Eigen::Vector3d p = region.X_WR.inverse() * X_WO.translation();
+  return std::abs(p.x()) <= region.size.x() / 2 && std::abs(p.y()) <= region.size.y() / 2 && p.z() >= 0.0 &&
+         p.z() <= region.size.z();
+}
+
+namespace {
+
+/// The sites of every object, those marked in `stays` left at their starts (no goal site) and
+/// the others' slots clear of them. std::nullopt, with why in `full`, when a region has no room
+/// for the objects sent there.
+std::optional<ObjectSites> assignSites(const core::LoadedWorld& loaded, const std::vector<bool>& stays,
+                                       std::string& full) {
   const core::World& world = *loaded.world;
   ObjectSites sites;
   std::map<std::string, std::size_t> used;
-  for (const core::ObjectSpec& object : world.objects) {
+  const auto slotFree = [&](const core::Region& region, const Eigen::Vector3d& p_W, const Eigen::Vector3d& footprint) {
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+      const core::ObjectSpec& other = world.objects[o];
+      if (!stays[o] || world.goalRegionOf(other) != &region) continue;
+      const Eigen::Vector3d d = region.X_WR.linear().transpose() * (other.X_WO.translation() - p_W);
+      const Eigen::Vector3d reach = (footprint + footprintIn(region, other.X_WO.linear(), other.size)) / 2 +
+                                    Eigen::Vector3d::Constant(kFingerRoom);
+      if (std::abs(d.x()) < reach.x() && std::abs(d.y()) < reach.y()) return false;
+    }
+    return true;
+  };
+  for (std::size_t o = 0; o < world.objects.size(); ++o) {
+    const core::ObjectSpec& object = world.objects[o];
     sites.start.push_back(object.X_WO);
-    const core::Region* region = world.goalRegionOf(object);
+    const core::Region* region = stays[o] ? nullptr : world.goalRegionOf(object);
     if (region == nullptr) {
       sites.goal.emplace_back();
       sites.goal_region.push_back(-1);
@@ -68,11 +97,10 @@ ObjectSites objectSites(const core::LoadedWorld& loaded) {
     sites.goal_region.push_back(static_cast<int>(region - world.regions.data()));
     const Eigen::Matrix3d R_WO =
         restingOrientation(object.X_WO.linear(), std::atan2(region->X_WR.linear()(1, 0), region->X_WR.linear()(0, 0)));
-    // the object's extent along the region's axes
-    const Eigen::Vector3d footprint =
-        (region->X_WR.linear().transpose() * R_WO * object.size.asDiagonal()).cwiseAbs().rowwise().sum();
+    const Eigen::Vector3d footprint = footprintIn(*region, R_WO, object.size);
     std::vector<core::Pose> slots;
     for (const Eigen::Vector3d& p : regionSlots(*region, footprint)) {
+      if (!slotFree(*region, p, footprint)) continue;
       core::Pose X_WO = core::Pose::Identity();
       X_WO.linear() = R_WO;
       X_WO.translation() = p;
@@ -87,13 +115,32 @@ ObjectSites objectSites(const core::LoadedWorld& loaded) {
         std::stable_partition(slots.begin(), slots.end(), reached) - slots.begin());
     std::size_t& k = used[region->name];
     if (k >= in_reach) {
-      throw std::runtime_error("region " + region->name + " has room for " + std::to_string(in_reach) +
-                               (in_reach == 1 ? " object" : " objects") + " side by side within reach of a robot (" +
-                               std::to_string(slots.size()) + " in all); more are sent there");
+      full = "region " + region->name + " has room for " + std::to_string(in_reach) +
+             (in_reach == 1 ? " object" : " objects") + " side by side within reach of a robot (" +
+             std::to_string(slots.size()) + " in all); more are sent there";
+      return std::nullopt;
     }
     sites.goal.push_back(slots[k++]);
   }
   return sites;
+}
+
+}  // namespace
+
+ObjectSites objectSites(const core::LoadedWorld& loaded) {
+  const core::World& world = *loaded.world;
+  std::vector<bool> stays(world.objects.size(), false);
+  for (std::size_t o = 0; o < world.objects.size(); ++o) {
+    const core::Region* region = world.goalRegionOf(world.objects[o]);
+    stays[o] = region != nullptr && restsIn(*region, world.objects[o].X_WO);
+  }
+  std::string full;
+  if (std::optional<ObjectSites> sites = assignSites(loaded, stays, full)) return *sites;
+  // the objects already in their regions leave the others no room: every object gets a slot
+  if (std::optional<ObjectSites> sites = assignSites(loaded, std::vector<bool>(world.objects.size(), false), full)) {
+    return *sites;
+  }
+  throw std::runtime_error(full);
 }
 
 core::ReachMap placementReach(const core::LoadedWorld& world, const ObjectSites& sites) {

@@ -9,7 +9,10 @@
 // by side in rows (pitch = object size + room for the fingertips on both sides), centred on
 // the region floor; slots some robot reaches (core::reachesBox) come first, so a region only
 // partly within reach fills its reachable part. The object rests on the face it rests on at
-// its start, turned about the vertical into line with the region.
+// its start, turned about the vertical into line with the region. An object that starts in its
+// goal region (restsIn) has no goal site: the plan leaves it where it is (the simulation's
+// goal check still wants it there at the end), and the other objects' slots keep clear of it;
+// unless that leaves a region no room for the objects sent there: then every object gets a slot.
 
 #include <optional>
 #include <vector>
@@ -46,6 +49,10 @@ struct ObjectSites {
 /// Object-centre positions for objects of `size` side by side in a region, row by row, at
 /// least kOpenFingerReach (or half the object) from its edges; one centred slot when none fits.
 std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size);
+
+/// True when an object at X_WO has its centre inside the region's box (as the simulation
+/// judges a placement, without its tolerance).
+bool restsIn(const core::Region& region, const core::Pose& X_WO);
 
 /// The sites of every object of a world. Throws std::runtime_error naming the region when more
 /// objects are sent to it than fit side by side within reach of a robot.

@@ -1,6 +1,6 @@
 // Goal sites of objects sent to a region (planner/object_sites.h): one slot each, inside the
 // region, apart from each other; slots a robot reaches are used first, and a region without
-// enough of them is an error that says so.
+// enough of them is an error that says so; objects already in their regions stay.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -51,6 +51,30 @@ TEST_CASE("objects sent to a bin only partly in reach get slots a robot reaches"
       CHECK((sites.goal[o]->translation() - sites.goal[p]->translation()).norm() >= first.size.maxCoeff());
     }
   }
+}
+
+TEST_CASE("an object already in its goal region stays, and the others' slots keep clear of it", "[planner][sites]") {
+  core::World world = core::loadWorldFile(testWorld("already_in_bin.yaml"));
+  const core::Region& bin = *world.goalRegionOf(world.objects[0]);
+  REQUIRE(planner::restsIn(bin, world.objects[0].X_WO));
+  REQUIRE_FALSE(planner::restsIn(bin, world.objects[1].X_WO));
+  {
+    const core::LoadedWorld loaded = core::validateWorld(world);
+    const planner::ObjectSites sites = planner::objectSites(loaded);
+    CHECK_FALSE(sites.goal[0]);  // red_in: no goal site, nothing to do
+    CHECK(sites.goal_region[0] == -1);
+    REQUIRE(sites.goal[1]);
+    CHECK(planner::restsIn(bin, *sites.goal[1]));
+    // 40 mm cubes: centres at least a cube and the fingers' room apart along some axis
+    const Eigen::Vector3d d = sites.goal[1]->translation() - world.objects[0].X_WO.translation();
+    CHECK(std::max(std::abs(d.x()), std::abs(d.y())) >= 0.04 + planner::kFingerRoom - 1e-9);
+  }
+  // at the bin's centre red_in leaves no slot for red_out: both get slots, red_in is moved
+  world.objects[0].X_WO.translation().head<2>() = bin.X_WR.translation().head<2>();
+  const core::LoadedWorld loaded = core::validateWorld(world);
+  const planner::ObjectSites sites = planner::objectSites(loaded);
+  CHECK(sites.goal[0]);
+  CHECK(sites.goal[1]);
 }
 
 TEST_CASE("more objects than a region has reachable slots for is an error naming the region", "[planner][sites]") {
