@@ -80,8 +80,6 @@ nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStat
 
 const char* toString(Method method) { return method == Method::kGreedy ? "greedy" : "optimal"; }
 
-int defaultSequentialFallbackRounds(Method method) { return method == Method::kGreedy ? 2 : 5; }
-
 const char* toString(PlannerStatus status) {
   switch (status) {
     case PlannerStatus::kSolved:
@@ -108,9 +106,9 @@ std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode 
 
 PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget) {
   if (settings.max_rounds < 1) throw std::invalid_argument("planner settings: max_rounds: must be >= 1");
-  const int fallback_rounds =
-      settings.sequential_fallback_rounds.value_or(defaultSequentialFallbackRounds(settings.method));
-  if (fallback_rounds < 0) throw std::invalid_argument("planner settings: sequential_fallback_rounds: must be >= 0");
+  if (settings.sequential_fallback_rounds < 0) {
+    throw std::invalid_argument("planner settings: sequential_fallback_rounds: must be >= 0");
+  }
   PlanResult result;
   PlannerStats& stats = result.stats;
   const Clock::time_point started = Clock::now();
@@ -300,7 +298,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // planned moves would grow the representation otherwise than Greedy's next round does, which
     // then may find a plan Next-Best Search cannot improve on, but Greedy's is better), nor while
     // a sequential fallback waits for the direct queries of the next rounds
-    const bool fallback_done = round >= fallback_round + fallback_rounds;
+    const bool fallback_done = round >= fallback_round + settings.sequential_fallback_rounds;
     const bool greedy_done = direct_plan() || (best_schedule && fallback_done);
     for (bool again = settings.method == Method::kOptimal && greedy_done; again && !time_up();) {
       again = false;

@@ -39,13 +39,6 @@ namespace dashbed::planner {
 enum class Method { kGreedy, kOptimal };
 enum class PlannerStatus { kSolved, kInfeasible, kTimeout };
 
-/// Rounds a sequential fallback waits for a plan whose robots work side by side, unless the
-/// settings say otherwise: Greedy-MM-DaSH 2, to answer soon; MM-DaSH 5, spending longer for a
-/// shorter plan. Session 23 on the worlds of `dashbed bench plan` whose fallback Greedy returns:
-/// 4 robots / 16 cubes cross seed 1 270 s to 132 s (planning 35 to 46 s), random seed 6 274 s to
-/// 137 s (36 to 40 s); shelving with 6 objects seed 9 92.3 s to 60.8 s (40 to 46 s).
-int defaultSequentialFallbackRounds(Method method);
-
 struct PlannerSettings {
   Method method = Method::kGreedy;
   std::uint64_t seed = 1;
@@ -65,9 +58,8 @@ struct PlannerSettings {
   int scheduling_constraints_per_round = 6;
   /// A plan moving one object at a time (the last resort of a round whose other queries all
   /// failed) is kept as a fallback: the direct queries go on for this many more rounds of
-  /// expansion, and a plan they find replaces it when shorter. Unset: the method's default
-  /// (defaultSequentialFallbackRounds).
-  std::optional<int> sequential_fallback_rounds;
+  /// expansion, and a plan they find replaces it when shorter.
+  int sequential_fallback_rounds = 2;
   RepresentationSettings representation;
 };
 

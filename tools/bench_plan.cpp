@@ -442,14 +442,8 @@ std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& o
   out << "Seeds 1.." << options.seeds << " (world seed = planner seed), budget per run "
       << core::significantText(options.greedy_budget, 6) << " s for Greedy, "
       << core::significantText(options.optimal_budget, 6) << " s for MM-DaSH, at most " << options.max_rounds
-      << " expansion rounds (a sequential plan waits "
-      << (options.fallback_rounds ? std::to_string(*options.fallback_rounds) +
-                                        (*options.fallback_rounds == 1 ? " round" : " rounds")
-                                  : std::to_string(planner::defaultSequentialFallbackRounds(planner::Method::kGreedy)) +
-                                        " rounds with Greedy, " +
-                                        std::to_string(planner::defaultSequentialFallbackRounds(planner::Method::kOptimal)) +
-                                        " with MM-DaSH")
-      << " for one whose robots work side by side), "
+      << " expansion rounds (a sequential plan waits " << options.fallback_rounds
+      << (options.fallback_rounds == 1 ? " round" : " rounds") << " for a direct one), "
       << options.jobs << (options.jobs == 1 ? " run" : " runs") << " at a time on "
       << std::thread::hardware_concurrency() << " hardware threads, simulation " << (options.simulate ? "on" : "off")
       << ".\n\n";

@@ -78,7 +78,7 @@ struct BenchOptions {
   double greedy_budget = 120.0;  ///< wall-clock budget per greedy run [s] (dashbed plan's default)
   double optimal_budget = 120.0;  ///< per MM-DaSH run [s] (as Greedy's: MM-DaSH starts from Greedy's plan)
   int max_rounds = 30;
-  std::optional<int> fallback_rounds;  ///< unset: each method's default
+  int fallback_rounds = PlannerChoice{}.fallback_rounds;
   bool simulate = true;
   int jobs = 1;
   std::string out = "bench_plan";

@@ -150,7 +150,8 @@ void addBenchCommand(CLI::App& app) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   plan->add_option("--fallback-rounds", plan_options->fallback_rounds, kFallbackRoundsHelp)
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   plan->add_flag("--simulate,!--no-simulate", plan_options->simulate,
                  "execute every solved plan in the simulator and count those passing every check (default on)");
   plan->add_option("--jobs", plan_options->jobs, "runs at a time (threads)")

@@ -68,7 +68,8 @@ void addPlannerOptions(CLI::App& command, PlannerChoice& choice) {
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
   command.add_option("--fallback-rounds", choice.fallback_rounds, kFallbackRoundsHelp)
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::NonNegativeNumber)
+      ->capture_default_str();
   command.add_flag("--verbose", choice.verbose, "print the planner's progress (queries, conflict resolutions) on stderr");
 }
 

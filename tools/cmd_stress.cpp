@@ -184,7 +184,7 @@ void addStressCommand(CLI::App& app) {
       ->capture_default_str();
   stress->add_option("--max-rounds", s.planner.max_rounds, "planner representation expansion rounds")
       ->capture_default_str();
-  stress->add_option("--fallback-rounds", s.planner.fallback_rounds, kFallbackRoundsHelp)->check(CLI::NonNegativeNumber);
+  stress->add_option("--fallback-rounds", s.planner.fallback_rounds, kFallbackRoundsHelp)->capture_default_str();
   stress->add_option("--threads,-j", options->threads, "worker threads per process (0: the cores of the machine "
                                                        "shared among its ranks)")
       ->capture_default_str();

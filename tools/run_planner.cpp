@@ -9,19 +9,15 @@
 
 namespace dashbed::tools {
 
-planner::Method methodOf(const std::string& method) {
-  if (method == "greedy") return planner::Method::kGreedy;
-  if (method == "optimal") return planner::Method::kOptimal;
-  throw std::invalid_argument("unknown planning method '" + method + "' (greedy or optimal)");
-}
-
-int fallbackRounds(const PlannerChoice& choice) {
-  return choice.fallback_rounds.value_or(planner::defaultSequentialFallbackRounds(methodOf(choice.method)));
-}
-
 planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoice& choice) {
   planner::PlannerSettings settings;
-  settings.method = methodOf(choice.method);
+  if (choice.method == "greedy") {
+    settings.method = planner::Method::kGreedy;
+  } else if (choice.method == "optimal") {
+    settings.method = planner::Method::kOptimal;
+  } else {
+    throw std::invalid_argument("unknown planning method '" + choice.method + "' (greedy or optimal)");
+  }
   if (!(choice.time_budget > 0.0)) throw std::invalid_argument("the time budget must be positive");
   if (choice.max_rounds < 1) throw std::invalid_argument("the number of rounds must be at least 1");
   settings.seed = choice.seed;

@@ -3,7 +3,6 @@
 // point, so that every command plans the same way for the same world, method and seed.
 
 #include <cstdint>
-#include <optional>
 #include <stdexcept>
 #include <string>
 
@@ -30,27 +29,19 @@ struct PlannerChoice {
   std::uint64_t seed = 1;         ///< sampling seed: same world, method and seed give the same plan
   double time_budget = 120.0;     ///< wall-clock budget [s]; status timeout beyond it
   int max_rounds = 30;            ///< representation expansion rounds before giving up (timeout)
-  /// rounds a sequential plan (one object at a time) waits for one whose robots work side by
-  /// side; unset: the method's default (planner::defaultSequentialFallbackRounds)
-  std::optional<int> fallback_rounds;
+  /// rounds a sequential plan (one object at a time) waits for one whose robots work side by side
+  int fallback_rounds = planner::PlannerSettings{}.sequential_fallback_rounds;
   bool verbose = false;           ///< the planner's progress on stderr
 };
 
 /// The help text of --fallback-rounds (plan, run, bench plan, stress).
 inline constexpr const char* kFallbackRoundsHelp =
     "rounds of representation expansion a sequential plan (one object at a time) waits for a plan whose robots "
-    "work side by side (default: 2 for greedy, 5 for optimal); more find shorter plans on crowded worlds, taking "
-    "longer";
+    "work side by side; more find shorter plans on crowded worlds, taking longer";
 
 /// Adds --method, --seed, --time-budget, --max-rounds, --fallback-rounds and --verbose to a
 /// command.
 void addPlannerOptions(CLI::App& command, PlannerChoice& choice);
-
-/// The planner's method of a choice's method name. Throws std::invalid_argument for an unknown one.
-planner::Method methodOf(const std::string& method);
-
-/// The rounds a sequential plan waits with this choice: its own, or its method's default.
-int fallbackRounds(const PlannerChoice& choice);
 
 /// Runs the DaSH planner on `world`. Throws std::invalid_argument for a bad choice (unknown
 /// method, non-positive budget or rounds; the planner's own for negative fallback rounds).

@@ -159,7 +159,7 @@ std::string writeSummaryJson(const CampaignInfo& info, const std::vector<PointSu
   if (s.mode == StressMode::kReplan) {
     out["planner"] = {
         {"method", s.planner.method}, {"time_budget", s.planner.time_budget}, {"max_rounds", s.planner.max_rounds},
-        {"fallback_rounds", fallbackRounds(s.planner)}};
+        {"fallback_rounds", s.planner.fallback_rounds}};
   }
   out["interval"] = "Wilson score, 95 %";
   out["min_success"] = info.min_success ? Json(*info.min_success) : Json();

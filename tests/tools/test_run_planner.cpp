@@ -15,15 +15,7 @@ using Catch::Matchers::Contains;
 TEST_CASE("the planner choice's rounds are the planner's settings", "[tools]") {
   const core::LoadedWorld world = core::loadWorld(core::defaultWorldPath());
   PlannerChoice choice;
-  CHECK_FALSE(choice.fallback_rounds);  // the method's default
-  CHECK(fallbackRounds(choice) == 2);
-  choice.method = "optimal";
-  CHECK(fallbackRounds(choice) == 5);
-  choice.fallback_rounds = 3;
-  CHECK(fallbackRounds(choice) == 3);
-  choice.method = "astar";
-  CHECK_THROWS_WITH(fallbackRounds(choice), Contains("unknown planning method 'astar'"));
-  choice.method = "greedy";
+  CHECK(choice.fallback_rounds == planner::PlannerSettings{}.sequential_fallback_rounds);
   choice.fallback_rounds = -1;
   CHECK_THROWS_WITH(planWorld(world, choice), Contains("sequential_fallback_rounds: must be >= 0"));
   choice.fallback_rounds = 0;
