@@ -35,6 +35,14 @@ StableSurface fixtureSurface(const FixtureSpec& fixture, std::string name,
 
 }  // namespace
 
+double distanceOutside(const Region& region, const Eigen::Vector3d& p_W, double tolerance) {
+  const Eigen::Vector3d p = region.X_WR.inverse() * p_W;
+  const Eigen::Vector3d half = region.size / 2 + Eigen::Vector3d::Constant(tolerance);
+  const Eigen::Vector3d lo(-half.x(), -half.y(), -tolerance);
+  const Eigen::Vector3d hi(half.x(), half.y(), region.size.z() + tolerance);
+  return (p.cwiseMax(lo).cwiseMin(hi) - p).norm();
+}
+
 const RobotSpec* World::findRobot(std::string_view wanted) const {
   return findByName(robots, wanted);
 }

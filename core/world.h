@@ -87,6 +87,10 @@ struct Region {
   SourceLocation where;
 };
 
+/// How far the point p_W is outside the region's box grown by `tolerance` on every side [m];
+/// 0 when inside.
+double distanceOutside(const Region& region, const Eigen::Vector3d& p_W, double tolerance = 0.0);
+
 /// A moveable box-shaped object resting at its start pose.
 struct ObjectSpec {
   std::string name;

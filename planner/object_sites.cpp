@@ -59,9 +59,7 @@ Eigen::Vector3d footprintIn(const core::Region& region, const Eigen::Matrix3d& R
 }  // namespace
 
 bool restsIn(const core::Region& region, const core::Pose& X_WO) {
-  const Eigen::Vector3d p = region.X_WR.inverse() * X_WO.translation();
-  return std::abs(p.x()) <= region.size.x() / 2 && std::abs(p.y()) <= region.size.y() / 2 && p.z() >= 0.0 &&
-         p.z() <= region.size.z();
+  return core::distanceOutside(region, X_WO.translation()) <= 0.0;
 }
 
 namespace {

@@ -519,12 +519,7 @@ Report Monitor::finish(const PlanExecutor& executor) {
     return nullptr;
   };
   const auto insideRegion = [&](const core::Region& region, const Pose& X_WO, double& outside) {
-    // distance of the object's centre outside the region box (0 when inside)
-    const Eigen::Vector3d p = region.X_WR.inverse() * X_WO.translation();
-    const Eigen::Vector3d half = region.size / 2 + Eigen::Vector3d::Constant(checks.placement_tolerance);
-    const Eigen::Vector3d lo(-half.x(), -half.y(), -checks.placement_tolerance);
-    const Eigen::Vector3d hi(half.x(), half.y(), region.size.z() + checks.placement_tolerance);
-    outside = (p.cwiseMax(lo).cwiseMin(hi) - p).norm();
+    outside = core::distanceOutside(region, X_WO.translation(), checks.placement_tolerance);
     return outside <= 0.0;
   };
 
