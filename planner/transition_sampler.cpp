@@ -92,10 +92,12 @@ Relabelled uprightFrame(const Matrix3d& R_WO, const Vector3d& size) {
 /// also comes shifted along it to either end, the pads still fully on the box: on a long object
 /// (the shelf items) two grippers can then hold it side by side in a handoff, which the
 /// centred grasps alone never allow (the holder's 75 mm wide housing blocks the other's
-/// fingers). Fixed order.
+/// fingers). Never downwards in U (a side grasp of an upright item): the housing would reach
+/// into the surface the box rests on, which boxGrasps keeps it clear of. Fixed order.
 std::vector<Grasp> graspsOf(const Relabelled& U, const Vector3d& size, bool top_only) {
   Pose X_OU = Pose::Identity();
   X_OU.linear() = U.R_OU;
+  const Vector3d up = U.R_OU.col(2);
   std::vector<Grasp> grasps;
   for (const core::BoxGrasp& box_grasp : core::boxGrasps(U.size_U)) {
     if (top_only && box_grasp.approach != core::GraspApproach::kTop) continue;
@@ -107,6 +109,7 @@ std::vector<Grasp> graspsOf(const Relabelled& U, const Vector3d& size, bool top_
     const double length = size.dot(width_axis.cwiseAbs());
     if (length < 2 * kFingertipWidth) continue;
     for (const double end : {1.0, -1.0}) {
+      if (end * width_axis.dot(up) < -0.5) continue;
       grasps.push_back(grasp);
       grasps.back().X_OT.translation() += end * (length - kFingertipWidth) / 2 * width_axis;
     }
@@ -148,8 +151,9 @@ std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, doub
     for (const bool up : {true, false}) {
       for (const Grasp& grasp : graspsOf(relabel(size, k, up), size, true)) {
         const Vector3d approach = grasp.X_OT.linear().col(2);
-        // how far the object reaches back from the TCP, towards the housing
-        const double behind = 0.5 * size.dot(approach.cwiseAbs()) - grasp.X_OT.translation().dot(approach);
+        // how far the object reaches back from the TCP, towards the housing (against the
+        // approach): its half extent along the approach plus the TCP's offset along it
+        const double behind = 0.5 * size.dot(approach.cwiseAbs()) + grasp.X_OT.translation().dot(approach);
         if (behind > kHousingBehindTcp - kHandoffClearance) continue;
         const double width = size.dot(grasp.X_OT.linear().col(0).cwiseAbs());  // across the fingers
         if (width + 4 * margin >= core::kHandeMaxOpening) continue;
@@ -470,9 +474,12 @@ std::optional<TransitionSample> pickSample(Context& c, const Part& p) {
 
 /// Resting orientations at a goal site: the object on each face, turned by multiples of 90
 /// degrees from the region's yaw, keeping those that fill exactly the site's box (so the site
-/// the search schedules stays the volume the object occupies). Fixed order.
+/// the search schedules stays the volume the object occupies; extents along the region's axes,
+/// which tell a quarter turn apart at any region yaw). Fixed order.
 std::vector<Matrix3d> placeOrientations(const Vector3d& size, const Matrix3d& R_site, double region_yaw) {
-  const Vector3d extents = R_site.cwiseAbs() * size;
+  const Matrix3d R_RW = Eigen::AngleAxisd(-region_yaw, kUp).toRotationMatrix();
+  const auto extents_in_region = [&](const Matrix3d& R_WO) -> Vector3d { return (R_RW * R_WO).cwiseAbs() * size; };
+  const Vector3d extents = extents_in_region(R_site);
   std::vector<Matrix3d> orientations;
   for (int k = 0; k < 3; ++k) {
     for (const bool up : {true, false}) {
@@ -480,7 +487,7 @@ std::vector<Matrix3d> placeOrientations(const Vector3d& size, const Matrix3d& R_
       for (int turn = 0; turn < 4; ++turn) {
         const Matrix3d R_WO =
             Eigen::AngleAxisd(region_yaw + turn * std::numbers::pi / 2, kUp).toRotationMatrix() * R_UO;
-        if ((R_WO.cwiseAbs() * size - extents).cwiseAbs().maxCoeff() <= 1e-9) orientations.push_back(R_WO);
+        if ((extents_in_region(R_WO) - extents).cwiseAbs().maxCoeff() <= 1e-9) orientations.push_back(R_WO);
       }
     }
   }

@@ -460,6 +460,34 @@ TEST_CASE("Shelf slots are filled by pushing side-grasped items in horizontally"
   REQUIRE(back_places > 0);
 }
 
+TEST_CASE("A bar goes into a bin turned by 45 degrees along its goal slot's axes", "[planner][transition]") {
+  const Setup& s = world("../tests/planner/worlds/turned_bin_45.yaml");
+  TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
+  const core::Region& bin = s.loaded.world->regions.at(0);
+  const Eigen::Matrix3d R_RW = bin.X_WR.linear().transpose();
+  const Vector3d size = s.loaded.world->objects.at(0).size;
+  // the bar's extents along the bin's axes at its goal slot: the long side along one of them
+  const Vector3d slot_extents = (R_RW * s.sites.goal.at(0)->linear()).cwiseAbs() * size;
+  REQUIRE(std::abs(slot_extents.maxCoeff() - 0.08) < 1e-9);
+  std::vector<Grasp> held;
+  for (const int h : s.hyperarcs(TransitionKind::kPick)) {
+    for (const TransitionSample& sample : sampler.pick(h)) held.push_back(*sample.grasp_after);
+  }
+  REQUIRE_FALSE(held.empty());
+  int placed = 0;
+  for (const int h : s.hyperarcs(TransitionKind::kPlace)) {
+    for (const Grasp& grasp : held) {
+      for (const TransitionSample& sample : sampler.place(h, grasp)) {
+        checkSample(s, sample, h);
+        const Vector3d extents = (R_RW * sample.X_WO.linear()).cwiseAbs() * size;
+        REQUIRE((extents - slot_extents).cwiseAbs().maxCoeff() < 1e-9);
+        ++placed;
+      }
+    }
+  }
+  REQUIRE(placed > 0);
+}
+
 TEST_CASE("Handoffs between adjacent robots of the four-robot world", "[planner][transition]") {
   const Setup& s = world("sort_4r_8c_cross.yaml");
   TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
