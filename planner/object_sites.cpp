@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <map>
 #include <stdexcept>
 #include <string>
 
@@ -64,25 +63,40 @@ bool restsIn(const core::Region& region, const core::Pose& X_WO) {
 
 namespace {
 
+/// An object resting in a region, or the goal given to one there: what other slots keep clear of.
+struct Occupant {
+  core::Pose X_WO;
+  Eigen::Vector3d size;
+};
+
+/// Whether a slot at p_W for an object of `footprint` (along the region's axes) keeps the
+/// fingers' room from every occupant.
+bool clearOf(const std::vector<Occupant>& occupants, const core::Region& region, const Eigen::Vector3d& p_W,
+             const Eigen::Vector3d& footprint) {
+  return std::none_of(occupants.begin(), occupants.end(), [&](const Occupant& other) {
+    const Eigen::Vector3d d = region.X_WR.linear().transpose() * (other.X_WO.translation() - p_W);
+    const Eigen::Vector3d reach =
+        (footprint + footprintIn(region, other.X_WO.linear(), other.size)) / 2 + Eigen::Vector3d::Constant(kFingerRoom);
+    return std::abs(d.x()) < reach.x() && std::abs(d.y()) < reach.y();
+  });
+}
+
 /// The sites of every object, those marked in `stays` left at their starts (no goal site) and
-/// the others' slots clear of them. std::nullopt, with why in `full`, when a region has no room
-/// for the objects sent there.
+/// the others' slots clear of them and of each other (objects of other sizes have other slot
+/// grids). std::nullopt, with why in `full`, when a region has no room for the objects sent
+/// there.
 std::optional<ObjectSites> assignSites(const core::LoadedWorld& loaded, const std::vector<bool>& stays,
                                        std::string& full) {
   const core::World& world = *loaded.world;
   ObjectSites sites;
-  std::map<std::string, std::size_t> used;
-  const auto slotFree = [&](const core::Region& region, const Eigen::Vector3d& p_W, const Eigen::Vector3d& footprint) {
-    for (std::size_t o = 0; o < world.objects.size(); ++o) {
-      const core::ObjectSpec& other = world.objects[o];
-      if (!stays[o] || world.goalRegionOf(other) != &region) continue;
-      const Eigen::Vector3d d = region.X_WR.linear().transpose() * (other.X_WO.translation() - p_W);
-      const Eigen::Vector3d reach = (footprint + footprintIn(region, other.X_WO.linear(), other.size)) / 2 +
-                                    Eigen::Vector3d::Constant(kFingerRoom);
-      if (std::abs(d.x()) < reach.x() && std::abs(d.y()) < reach.y()) return false;
+  // per region (by index): the objects staying in it, the goals given out in it
+  std::vector<std::vector<Occupant>> staying(world.regions.size()), given(world.regions.size());
+  for (std::size_t o = 0; o < world.objects.size(); ++o) {
+    const core::ObjectSpec& object = world.objects[o];
+    if (const core::Region* region = world.goalRegionOf(object); stays[o] && region != nullptr) {
+      staying[static_cast<std::size_t>(region - world.regions.data())].push_back({object.X_WO, object.size});
     }
-    return true;
-  };
+  }
   for (std::size_t o = 0; o < world.objects.size(); ++o) {
     const core::ObjectSpec& object = world.objects[o];
     sites.start.push_back(object.X_WO);
@@ -92,13 +106,14 @@ std::optional<ObjectSites> assignSites(const core::LoadedWorld& loaded, const st
       sites.goal_region.push_back(-1);
       continue;
     }
-    sites.goal_region.push_back(static_cast<int>(region - world.regions.data()));
+    const auto r = static_cast<std::size_t>(region - world.regions.data());
+    sites.goal_region.push_back(static_cast<int>(r));
     const Eigen::Matrix3d R_WO =
         restingOrientation(object.X_WO.linear(), std::atan2(region->X_WR.linear()(1, 0), region->X_WR.linear()(0, 0)));
     const Eigen::Vector3d footprint = footprintIn(*region, R_WO, object.size);
     std::vector<core::Pose> slots;
     for (const Eigen::Vector3d& p : regionSlots(*region, footprint)) {
-      if (!slotFree(*region, p, footprint)) continue;
+      if (!clearOf(staying[r], *region, p, footprint)) continue;
       core::Pose X_WO = core::Pose::Identity();
       X_WO.linear() = R_WO;
       X_WO.translation() = p;
@@ -107,18 +122,20 @@ std::optional<ObjectSites> assignSites(const core::LoadedWorld& loaded, const st
     const auto reached = [&](const core::Pose& X_WO) {
       const auto& robots = loaded.robots->robots();
       return std::any_of(robots.begin(), robots.end(),
-                         [&](const core::PlacedRobot& r) { return core::reachesBox(r, X_WO, object.size); });
+                         [&](const core::PlacedRobot& robot) { return core::reachesBox(robot, X_WO, object.size); });
     };
-    const std::size_t in_reach = static_cast<std::size_t>(
-        std::stable_partition(slots.begin(), slots.end(), reached) - slots.begin());
-    std::size_t& k = used[region->name];
-    if (k >= in_reach) {
-      full = "region " + region->name + " has room for " + std::to_string(in_reach) +
-             (in_reach == 1 ? " object" : " objects") + " side by side within reach of a robot (" +
-             std::to_string(slots.size()) + " in all); more are sent there";
+    const auto in_reach = std::stable_partition(slots.begin(), slots.end(), reached);
+    const auto slot = std::find_if(slots.begin(), in_reach, [&](const core::Pose& X_WO) {
+      return clearOf(given[r], *region, X_WO.translation(), footprint);
+    });
+    if (slot == in_reach) {
+      const auto room = static_cast<std::size_t>(in_reach - slots.begin());
+      full = "region " + region->name + " has room for " + std::to_string(room) + (room == 1 ? " object" : " objects") +
+             " side by side within reach of a robot (" + std::to_string(slots.size()) + " in all); more are sent there";
       return std::nullopt;
     }
-    sites.goal.push_back(slots[k++]);
+    sites.goal.push_back(*slot);
+    given[r].push_back({*slot, object.size});
   }
   return sites;
 }

@@ -109,3 +109,21 @@ TEST_CASE("the robots that may place an object are those reaching its goal slot"
   CHECK(core::reachesBox((*world.robots)[0], *sites.goal[0], cube.size));
   CHECK_FALSE(core::reachesBox((*world.robots)[1], *sites.goal[0], cube.size));
 }
+
+TEST_CASE("objects of other sizes sent to one region get slots clear of each other", "[planner][sites]") {
+  const core::LoadedWorld world = core::loadWorld(testWorld("mixed_sizes_in_bin.yaml"));
+  const std::vector<core::ObjectSpec>& objects = world.world->objects;
+  const planner::ObjectSites sites = planner::objectSites(world);
+  const core::Region& bin = *world.world->goalRegionOf(objects.front());
+  for (std::size_t o = 0; o < objects.size(); ++o) {
+    REQUIRE(sites.goal[o]);
+    CHECK(planner::restsIn(bin, *sites.goal[o]));
+    // the bin and every object are square to the world: footprints are the sizes' x and y
+    for (std::size_t p = 0; p < o; ++p) {
+      INFO(objects[o].name << " and " << objects[p].name);
+      const Eigen::Vector3d d = (sites.goal[o]->translation() - sites.goal[p]->translation()).cwiseAbs();
+      const Eigen::Vector3d apart = (objects[o].size + objects[p].size) / 2;
+      CHECK((d.x() >= apart.x() + planner::kFingerRoom - 1e-9 || d.y() >= apart.y() + planner::kFingerRoom - 1e-9));
+    }
+  }
+}
