@@ -28,6 +28,12 @@ struct Edge {
   bool operator==(const Edge&) const = default;
 };
 
+/// `ms` rounded to the whole millisecond it misses by a rounding error only.
+double snapToMillis(double ms) {
+  const double whole = std::round(ms);
+  return std::abs(ms - whole) < 1e-6 ? whole : ms;
+}
+
 /// Holding the same object in the same grasp (or both nothing).
 bool sameHeld(const std::optional<HeldObject>& x, const std::optional<HeldObject>& y) {
   return x.has_value() == y.has_value() && (!x || (x->object == y->object && x->X_TO.isApprox(y->X_TO, 0.0)));
@@ -157,8 +163,10 @@ class ScheduleView {
  private:
   void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
                 RobotState& state) const {
-    // the piece i with times[i] <= tau < times[i + 1] (or <= with !after)
-    const double tau_ms = tau * 1000.0;
+    // the piece i with times[i] <= tau < times[i + 1] (or <= with !after); tau, a difference of
+    // seconds, may miss a whole-millisecond key by a rounding error (1.009 s is 1008.9999... ms):
+    // at a key it counts as the key
+    const double tau_ms = snapToMillis(tau * 1000.0);
     const auto next = after ? std::upper_bound(times.begin() + 1, times.end(), tau_ms,
                                                [](double v, Millis x) { return v < static_cast<double>(x); })
                             : std::lower_bound(times.begin() + 1, times.end(), tau_ms,
