@@ -163,8 +163,9 @@ void addStressCommand(CLI::App& app) {
       "each replaying the nominal plan open-loop or re-planning, simulated headless. Writes OUT/summary.json "
       "(success rates with Wilson 95 % intervals, failure taxonomy), OUT/junit.xml, OUT/trials.csv, "
       "OUT/trials.json and the worst trials as OUT/trial_N/{world.yaml,plan.json,report.json}. Under "
-      "`mpirun -np K` the trials are shared among the ranks with identical results. Exit 0, or 1 when a success "
-      "rate is below --min-success.");
+      "`mpirun -np K` the trials are shared among the ranks with identical results. Exit 0 done (failed trials "
+      "alone do not fail it), 1 a success rate below --min-success, 2 bad option, 3 bad input (world, plan), "
+      "4 / 5 no nominal plan (infeasible / planner timeout).");
   stress->add_option("world", options->world_file, "world file (default: worlds/default.yaml)");
   stress->add_option("--plan", options->plan_file, "replay this plan (default: plan the nominal world)");
   stress->add_option("--mode", options->mode, "replay (the nominal plan, open-loop) or replan (plan every trial)")
