@@ -7,11 +7,19 @@ namespace {
 
 constexpr Millis kMoveSampleStep = 50;  // [ms] between written samples of a move
 
-/// Appends a point unless the trajectory already has one at that time (segments meet there).
+/// Appends a point unless the trajectory already has one at that time (segments meet there);
+/// a velocity that point leaves to the interpolator is then taken from this one. So a
+/// transition's last key, where the arm comes to rest, is written at rest even when a move
+/// starts right there: interpolated, a joint going on the same way would not stop, and the arm
+/// would leave the straight line the move was checked along.
 void append(core::RobotTrajectory& trajectory, Millis t, const core::ArmConfig& q,
             const std::optional<core::ArmConfig>& qd) {
   const double seconds = toSeconds(t);
-  if (!trajectory.points.empty() && trajectory.points.back().t >= seconds) return;
+  if (!trajectory.points.empty() && trajectory.points.back().t >= seconds) {
+    core::TrajectoryPoint& last = trajectory.points.back();
+    if (last.t == seconds && !last.qd) last.qd = qd;
+    return;
+  }
   trajectory.points.push_back({seconds, q, qd});
 }
 

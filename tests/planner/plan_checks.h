@@ -57,6 +57,22 @@ inline void requireValidActions(const core::Plan& plan, const core::World& world
   CHECK(holding.empty());
 }
 
+/// Every move starts from rest as written: a point with a non-zero joint velocity (a move's
+/// sample) follows a point whose velocity is written too, never one the interpolator would give
+/// a velocity of its own (a transition's key), which would bend the start of the move off the
+/// straight line it was checked along.
+inline void requireMovesStartAtRest(const core::Plan& plan) {
+  for (const core::RobotTrajectory& trajectory : plan.trajectories) {
+    for (std::size_t i = 1; i < trajectory.points.size(); ++i) {
+      const core::TrajectoryPoint& point = trajectory.points[i];
+      const bool moving =
+          point.qd && std::any_of(point.qd->begin(), point.qd->end(), [](double v) { return v != 0.0; });
+      INFO(trajectory.robot << " at t = " << point.t << " s");
+      if (moving) REQUIRE(trajectory.points[i - 1].qd);
+    }
+  }
+}
+
 /// No two robot bodies touch along the plan as the simulator interpolates it, every 2 ms,
 /// with a checker of zero margin (the planner's own checks use a margin and its timelines).
 /// Fingers follow the gripper commands: open, or closed on an object (the worlds used here have

@@ -49,6 +49,7 @@ TEST_CASE("greedy DaSH plans the default world into valid collision-free chains"
   requireValidActions(plan, *world.world);
   // 4 cubes that all need a handoff (cross starts): 4 picks, 4 handoffs, 4 places
   CHECK(plan.actions.size() == 12);
+  requireMovesStartAtRest(plan);
   requireNoRobotCollision(plan, world);
   CHECK(result.stats.makespan > 0.0);
   CHECK(result.stats.makespan == Approx(plan.duration()).margin(1e-9));
