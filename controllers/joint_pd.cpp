@@ -22,6 +22,11 @@ ArmTorques JointPdController::compute(const Eigen::VectorXd& q, const Eigen::Vec
   const Eigen::VectorXd tau = core::inverseDynamics(model_, q, qd, qdd, gravity_root_, payload);
   ArmTorques out;
   for (int i = 0; i < 6; ++i) {
+    if (!std::isfinite(tau[i])) {  // a diverged state: no torque, and saturated, so it is reported
+      out.saturated = true;
+      out.tau[i] = 0.0;
+      continue;
+    }
     const double ratio = std::abs(tau[i]) / effort_limit_[i];
     out.max_effort_ratio = std::max(out.max_effort_ratio, ratio);
     if (ratio >= 1.0) out.saturated = true;

@@ -29,7 +29,8 @@ class JointPdController {
   /// tau = M(q) (qdd_ref + kp (q_ref - q) + kd (qd_ref - qd)) + c(q, qd) + g(q) for the six
   /// arm joints; q and qd hold all the model's joints (the fingers' accelerations are taken
   /// as zero). With a payload (the object in the gripper, as a UR controller is told with
-  /// set_payload) M, c and g include it. Each torque is clamped to +-max_effort of its joint.
+  /// set_payload) M, c and g include it. Each torque is clamped to +-max_effort of its joint;
+  /// one that is not finite (a diverged state) is 0, and the result counts as saturated.
   ArmTorques compute(const Eigen::VectorXd& q, const Eigen::VectorXd& qd, const JointReference& ref,
                      const core::Payload* payload = nullptr) const;
 

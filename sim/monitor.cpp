@@ -85,6 +85,7 @@ struct ActionTrack {
   std::optional<double> command2_time;  // handoff: giver open
   // pick
   std::optional<double> both_pads_time;
+  std::optional<double> close_z;  // the object's height when the gripper is told to close [m]
   bool end_sampled = false;
   bool held_at_end = false;
   bool support_contact_at_end = false;
@@ -453,6 +454,7 @@ void Monitor::observe(const PlanExecutor& executor) {
     const core::PlanAction& action = *a.action;
     switch (action.type) {
       case ActionType::kPick: {
+        if (a.command_time && !a.close_z && t >= *a.command_time) a.close_z = s.sim.objectPose(a.object).translation().z();
         if (a.command_time && !a.both_pads_time && t >= *a.command_time && a.robot >= 0 &&
             left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0) {
           a.both_pads_time = t;
@@ -461,7 +463,8 @@ void Monitor::observe(const PlanExecutor& executor) {
           a.end_sampled = true;
           a.held_at_end = a.robot >= 0 && left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0;
           a.support_contact_at_end = support[a.object];
-          a.lift_height = s.sim.objectPose(a.object).translation().z() - s.start_z[a.object];
+          // from where this pick found it (a second pick of a placed object starts elsewhere)
+          a.lift_height = s.sim.objectPose(a.object).translation().z() - a.close_z.value_or(s.start_z[a.object]);
         }
         break;
       }
@@ -469,7 +472,9 @@ void Monitor::observe(const PlanExecutor& executor) {
         if (t < action.start || t > action.end || a.robot < 0 || a.receiver < 0) break;
         const bool giver = left[a.robot].count(a.object) && right[a.robot].count(a.object);
         const bool receiver = left[a.receiver].count(a.object) && right[a.receiver].count(a.object);
-        if (giver && receiver) a.overlap += dt;
+        // holding together until the giver is told to open (its pads count as touching while
+        // within 1 mm, some milliseconds after)
+        if (giver && receiver && (!a.command2_time || t < *a.command2_time)) a.overlap += dt;
         for (const std::string& name : touched_by[a.object]) {
           const bool gripper = name.rfind(s.world.robots[a.robot].name + "/", 0) == 0 ||
                                name.rfind(s.world.robots[a.receiver].name + "/", 0) == 0;

@@ -424,7 +424,7 @@ Simulation::~Simulation() {
 void Simulation::step() {
   impl_->turnAnchoredContacts();
   impl_->world.stepSimulation(time_step_, 0, time_step_);
-  time_ += time_step_;
+  time_ = static_cast<double>(++steps_) * time_step_;
 }
 
 Eigen::VectorXd Simulation::jointPositions(int r) const {

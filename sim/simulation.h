@@ -8,6 +8,7 @@
 // joints are force-limited velocity servos (setFingerServo). Objects are free rigid boxes,
 // held by a gripper only through contact friction.
 
+#include <cstdint>
 #include <memory>
 #include <vector>
 
@@ -85,6 +86,7 @@ class Simulation {
   const core::World& world_;
   const core::RobotSet& robots_;
   double time_step_;
+  std::int64_t steps_ = 0;  ///< steps taken: time_ is steps_ * time_step_, without a sum's drift
   double time_ = 0.0;
   std::unique_ptr<Impl> impl_;
 };

@@ -1,9 +1,11 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <random>
 
+#include "controllers/joint_pd.h"
 #include "core/robot_set.h"
 #include "sim/plan_executor.h"
 #include "sim/simulation.h"
@@ -39,6 +41,26 @@ TEST_CASE("Bullet's multibody reproduces the model's forward kinematics", "[sim]
       }
     }
   }
+}
+
+TEST_CASE("the arm controller keeps within the effort limits and gives a diverged state no torque", "[sim]") {
+  const core::World world = test::tableWorld(true);
+  const core::RobotSet robots(world);
+  const core::RobotModel& model = *robots[0].model;
+  const controllers::JointPdController pd(model, world.controller, Eigen::Vector3d(0.0, 0.0, -9.81));
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(8), qd = Eigen::VectorXd::Zero(8);
+  controllers::JointReference ref;
+  ref.q[1] = 1.0;  // 1 rad off at the shoulder: far more than 150 Nm unclamped
+  const controllers::ArmTorques far = pd.compute(q, qd, ref);
+  CHECK(far.saturated);
+  CHECK(far.max_effort_ratio > 1.0);
+  for (int i = 0; i < 6; ++i) {
+    CHECK(std::abs(far.tau[i]) <= model.joints()[model.movableJoints()[i]].max_effort);
+  }
+  q[2] = std::numeric_limits<double>::quiet_NaN();
+  const controllers::ArmTorques diverged = pd.compute(q, qd, ref);
+  CHECK(diverged.saturated);
+  for (int i = 0; i < 6; ++i) CHECK(std::isfinite(diverged.tau[i]));
 }
 
 TEST_CASE("a robot holds its home pose under gravity for 5 s", "[sim]") {
