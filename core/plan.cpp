@@ -95,17 +95,25 @@ std::string withoutExceptionId(const std::string& what) {
   return what;
 }
 
+/// Deeper nesting than any plan has is refused while parsing: a parsed value that deep would
+/// be copied and destroyed recursively, overflowing the stack.
+constexpr std::size_t kMaxNesting = 256;
+
+/// Thrown by the parser's callback at the first value nested deeper than kMaxNesting.
+struct TooDeep {
+  std::string pointer;
+};
+
 // Finds the first key that occurs twice in one object (nlohmann keeps the last silently).
-// Runs as the parser's callback; remembers the key's pointer.
+// Runs as the parser's callback; remembers the key's pointer. Throws TooDeep.
 class DuplicateKeyFinder {
  public:
   bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
     switch (event) {
       case Json::parse_event_t::object_start:
-        frames_.push_back({true, {}, {}, 0});
-        break;
       case Json::parse_event_t::array_start:
-        frames_.push_back({false, {}, {}, 0});
+        if (frames_.size() >= kMaxNesting) throw TooDeep{pointer()};
+        frames_.push_back({event == Json::parse_event_t::object_start, {}, {}, 0});
         break;
       case Json::parse_event_t::key: {
         Frame& frame = frames_.back();
@@ -171,6 +179,8 @@ Json parseDocument(std::string_view text, const std::string& file) {
       if (found != std::string_view::npos) what += " at " + lineAndColumn(text, found);
     }
     fail(file, "", "invalid JSON: " + what);
+  } catch (const TooDeep& deep) {
+    fail(file, deep.pointer, "nested deeper than " + std::to_string(kMaxNesting) + " levels");
   }
   if (finder.duplicate()) fail(file, *finder.duplicate(), "duplicate key");
   return document;
@@ -430,9 +440,13 @@ void checkName(const std::string& file, const std::string& pointer, const std::s
   if (name.empty()) fail(file, pointer, "empty name");
 }
 
+/// Plan times beyond this are typos; a simulation of them would not end [s] (a day).
+constexpr double kMaxPlanTime = 86400.0;
+
 void checkTime(const std::string& file, const std::string& pointer, double t) {
   if (!std::isfinite(t)) fail(file, pointer, "not a finite number (" + exact(t) + ")");
   if (t < 0.0) fail(file, pointer, "negative time " + exact(t) + " s");
+  if (t > kMaxPlanTime) fail(file, pointer, "time " + exact(t) + " s beyond a day (" + exact(kMaxPlanTime) + " s)");
 }
 
 void checkSix(const std::string& file, const std::string& pointer,

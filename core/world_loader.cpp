@@ -1,10 +1,32 @@
 #include "core/world_loader.h"
 
 #include <algorithm>
+#include <sstream>
 
 #include "core/world_io.h"
 
 namespace dashbed::core {
+
+namespace {
+
+/// Throws WorldError naming robots[i].home[j] when a home angle is outside its joint's limits.
+void requireHomesWithinLimits(const World& world, const RobotSet& robots) {
+  for (std::size_t r = 0; r < world.robots.size(); ++r) {
+    const RobotModel& model = *robots[r].model;
+    for (int j = 0; j < 6; ++j) {
+      const JointModel& joint = model.joints()[model.movableJoints()[j]];
+      const double q = world.robots[r].home[j];
+      if (q < joint.lower || q > joint.upper) {
+        std::ostringstream msg;
+        msg << formatLocation(world.robots[r].where) << ": robots[" << r << "].home[" << j << "]: " << joint.name
+            << " at " << q << " rad is outside its limits [" << joint.lower << ", " << joint.upper << "]";
+        throw WorldError(msg.str());
+      }
+    }
+  }
+}
+
+}  // namespace
 
 LoadedWorld validateWorld(World world) {
   // a world built in memory (every fixture has solid parts once derived); derived entries
@@ -15,6 +37,7 @@ LoadedWorld validateWorld(World world) {
   LoadedWorld loaded;
   loaded.world = std::make_unique<const World>(std::move(world));
   loaded.robots = std::make_unique<const RobotSet>(*loaded.world);
+  requireHomesWithinLimits(*loaded.world, *loaded.robots);
   loaded.reach = computeReach(*loaded.world, *loaded.robots);
   requireReachable(*loaded.world, loaded.reach);
   return loaded;

@@ -42,6 +42,13 @@ using world_yaml::formatNumber;
 constexpr double kMaxPenetration = 0.001;   // deeper contact than this is an overlap
 constexpr double kRestTolerance = 0.002;    // bottom face to surface height
 constexpr int kMaxSolverIterations = 1'000'000;
+// Bounds that keep a simulation and the planner's slot grids finite: beyond them a value is a
+// typo, not a scene (e.g. a region 500 m wide has 30 million slots to try)
+constexpr double kMaxLength = 100.0;      // [m] any size
+constexpr double kMaxMass = 1000.0;       // [kg]
+constexpr double kMinTimeStep = 1e-5;     // [s]
+constexpr double kMaxSettleTime = 60.0;   // [s]
+constexpr double kMaxGravity = 100.0;     // [m/s^2]
 
 std::string millimetres(double metres) {
   char buffer[32];
@@ -205,7 +212,11 @@ class Reader {
 
   // range checks; `what` finishes "must be ..."
   double positive(const Field& field) const;
+  /// A positive value at most `most` (in `unit`): sizes, masses, times that a simulation or a
+  /// slot grid would otherwise take forever over.
+  double positiveAtMost(const Field& field, double most, const std::string& unit) const;
   double nonNegative(const Field& field) const;
+  double length(const Field& field) const { return positiveAtMost(field, kMaxLength, " m"); }
   double within(const Field& field, double low, double high, const std::string& unit) const;
   template <std::size_t N>
   std::array<double, N> nonNegativeArray(const Field& field) const;
@@ -347,6 +358,12 @@ double Reader::positive(const Field& field) const {
   return value;
 }
 
+double Reader::positiveAtMost(const Field& field, double most, const std::string& unit) const {
+  const double value = positive(field);
+  if (value > most) fail(field, "must be at most " + formatNumber(most) + unit + ", got " + formatNumber(value));
+  return value;
+}
+
 double Reader::nonNegative(const Field& field) const {
   const double value = number(field);
   if (value < 0.0) fail(field, "must be >= 0, got " + formatNumber(value));
@@ -450,7 +467,7 @@ FixtureSpec Reader::fixture(const Field& field) {
   const Field size = map.require("size");
   numbers(size, 3);
   const std::vector<Field> edges = list(size);
-  fixture.size = {positive(edges[0]), positive(edges[1]), positive(edges[2])};
+  fixture.size = {length(edges[0]), length(edges[1]), length(edges[2])};
   fixture.X_WF = yawPose(map.require("pose"), "fixtures");
   if (const auto color = map.get("color")) fixture.color = this->color(*color);
 
@@ -521,7 +538,7 @@ StableSurface Reader::surface(const Field& field) {
   const Field size = map.require("size");
   numbers(size, 2);
   const std::vector<Field> edges = list(size);
-  surface.size = {positive(edges[0]), positive(edges[1])};
+  surface.size = {length(edges[0]), length(edges[1])};
   const auto yaw = map.get("yaw");
   surface.X_WS = makePoseXyzYaw(center, yaw ? number(*yaw) : 0.0);
   return surface;
@@ -537,7 +554,7 @@ Region Reader::region(const Field& field) {
   const Field size = map.require("size");
   numbers(size, 3);
   const std::vector<Field> edges = list(size);
-  region.size = {positive(edges[0]), positive(edges[1]), positive(edges[2])};
+  region.size = {length(edges[0]), length(edges[1]), length(edges[2])};
   const auto yaw = map.get("yaw");
   region.X_WR = makePoseXyzYaw(center, yaw ? number(*yaw) : 0.0);
   return region;
@@ -552,9 +569,9 @@ ObjectSpec Reader::object(const Field& field) {
   if (const auto size = map.get("size")) {
     numbers(*size, 3);
     const std::vector<Field> edges = list(*size);
-    object.size = {positive(edges[0]), positive(edges[1]), positive(edges[2])};
+    object.size = {length(edges[0]), length(edges[1]), length(edges[2])};
   }
-  if (const auto mass = map.get("mass")) object.mass = positive(*mass);
+  if (const auto mass = map.get("mass")) object.mass = positiveAtMost(*mass, kMaxMass, " kg");
   if (const auto friction = map.get("friction")) object.friction = positive(*friction);
   if (const auto color = map.get("color")) object.color = this->color(*color);
   if (const auto object_class = map.get("class")) object.object_class = identifier(*object_class);
@@ -588,12 +605,15 @@ void Reader::physics(const Field& field, PhysicsSettings& settings) const {
   map.allowOnly({"time_step", "gravity", "solver_iterations", "pad_friction", "fixture_friction",
                  "settle_time"});
   if (const auto f = map.get("time_step")) {
-    settings.time_step = number(*f);
-    if (!(settings.time_step > 0.0) || settings.time_step > 0.01) {
-      fail(*f, "must be in (0, 0.01] s, got " + formatNumber(settings.time_step));
+    settings.time_step = within(*f, kMinTimeStep, 0.01, " s");
+  }
+  if (const auto f = map.get("gravity")) {
+    settings.gravity = vector3(*f);
+    if (settings.gravity.norm() > kMaxGravity) {
+      fail(*f, "must be at most " + formatNumber(kMaxGravity) + " m/s^2 in magnitude, got " +
+                   formatNumber(settings.gravity.norm()));
     }
   }
-  if (const auto f = map.get("gravity")) settings.gravity = vector3(*f);
   if (const auto f = map.get("solver_iterations")) {
     settings.solver_iterations = integer(*f);
     if (settings.solver_iterations < 1 || settings.solver_iterations > kMaxSolverIterations) {
@@ -603,7 +623,7 @@ void Reader::physics(const Field& field, PhysicsSettings& settings) const {
   }
   if (const auto f = map.get("pad_friction")) settings.pad_friction = positive(*f);
   if (const auto f = map.get("fixture_friction")) settings.fixture_friction = positive(*f);
-  if (const auto f = map.get("settle_time")) settings.settle_time = nonNegative(*f);
+  if (const auto f = map.get("settle_time")) settings.settle_time = within(*f, 0.0, kMaxSettleTime, " s");
 }
 
 void Reader::controller(const Field& field, ControllerSettings& settings) const {
@@ -636,6 +656,7 @@ void Reader::checks(const Field& field, CheckSettings& settings) const {
   for (const auto& [key, value] : fields) {
     if (const auto f = map.get(key)) *value = nonNegative(*f);
   }
+  if (const auto f = map.get("settle_time")) settings.settle_time = within(*f, 0.0, kMaxSettleTime, " s");
 }
 
 // ---- the world ----------------------------------------------------------------------------

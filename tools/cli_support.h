@@ -3,8 +3,10 @@
 
 #include <iostream>
 #include <stdexcept>
+#include <string>
 
 #include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
 
 #include "core/world_io.h"
 #include "tools/commands.h"
@@ -27,6 +29,12 @@ void runGuarded(const char* what, F&& f) {
     std::cerr << "dashbed " << what << ": " << e.what() << "\n";
     throw CLI::RuntimeError(kExitUsage);
   }
+}
+
+/// `json` as the subcommands print it (--json): indented; bytes that are not UTF-8 (in a file
+/// or object name) replaced instead of thrown on.
+inline std::string jsonText(const nlohmann::json& json) {
+  return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
 }
 
 }  // namespace dashbed::tools

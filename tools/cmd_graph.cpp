@@ -92,7 +92,7 @@ void runCounts(const GraphOptions& options) {
                                 {"objects", objects},
                                 {"hypergraph", sizeJson(hypergraph)},
                                 {"graph", sizeJson(graph)}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << jsonText(out) << "\n";
     return;
   }
   std::cout << "representation sizes for " << robots << " robots, " << objects
@@ -155,7 +155,7 @@ void runWorld(const GraphOptions& options) {
       }
     }
     if (!options.output.empty()) out["dot"] = options.output;
-    report << out.dump(2) << "\n";
+    report << jsonText(out) << "\n";
   } else {
     report << "task-space hypergraph of world " << world.name << " (" << file.string() << "): " << graph.numRobots()
            << " robots, " << graph.numObjects() << " objects\n";

@@ -102,7 +102,7 @@ void runFk(const KinOptions& options, const std::vector<double>& q_in) {
   const nlohmann::json pose = poseJson(X);
   if (options.json) {
     nlohmann::json out = {{"frame", options.frame}, {"reference", context.reference}, {"q", q_in}, {"pose", pose}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << jsonText(out) << "\n";
     return;
   }
   std::cout << "frame " << options.frame << " in " << context.reference << ":\n";
@@ -142,7 +142,7 @@ void runIk(const KinOptions& options, const std::vector<double>& xyz, const std:
     nlohmann::json out = {{"frame", options.frame},   {"reference", context.reference},
                           {"target", poseJson(X_RefT)}, {"seed", seed},
                           {"units", options.degrees ? "deg" : "rad"}, {"solutions", list}};
-    std::cout << out.dump(2) << "\n";
+    std::cout << jsonText(out) << "\n";
   } else {
     std::cout << solutions.size() << " solution(s) for frame " << options.frame << " in " << context.reference
               << ", nearest to the seed first (" << (options.degrees ? "deg" : "rad") << "):\n";

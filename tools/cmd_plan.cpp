@@ -32,7 +32,7 @@ void planJob(const PlanOptions& options) {
   const planner::PlanResult result = planWorld(world, options.choice);
   if (result.plan && !options.output.empty()) writeText(options.output, core::writePlanJson(*result.plan));
   if (options.json) {
-    std::cout << planResultJson(result).dump(2) << "\n";
+    std::cout << jsonText(planResultJson(result)) << "\n";
   } else {
     std::cout << "world " << world.world->name << " (" << file.string() << "), method " << options.choice.method
               << ", seed " << options.choice.seed << "\n"

@@ -92,7 +92,7 @@ void printSummary(const core::LoadedWorld& loaded, const std::filesystem::path& 
     }
     out["handoff_pairs"] = nlohmann::json::array();
     for (const auto& [a, b] : handoff_pairs) out["handoff_pairs"].push_back({world.robots[a].name, world.robots[b].name});
-    std::cout << out.dump(2) << "\n";
+    std::cout << jsonText(out) << "\n";
     return;
   }
 

@@ -270,6 +270,8 @@ class ScriptParser {
       const Token* at = cursor.peek();
       s.seconds = cursor.number("a duration [s]");
       if (s.seconds < 0.0) fail(*at, "a wait cannot be negative");
+      // a day: longer is a typo, and the plan's millisecond times would overflow
+      if (s.seconds > 86400.0) fail(*at, "a wait of at most 86400 s (a day), got " + at->text);
     } else if (verb == "moves" || verb == "move") {
       const Token& where = cursor.take("'home' or 'to Q1 .. Q6'");
       if (where.text == "home") {

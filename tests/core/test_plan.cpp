@@ -317,6 +317,11 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
     std::string message;
   };
   const std::string top_keys = "dashbed_plan, world, seed, robots, gripper, actions, statistics";
+  // statistics_too_deep: {"a": [[[...]]]} nested 300 arrays deep; the parser stops at the
+  // array that would be the 257th level (the document, statistics, "a" and 253 arrays in it
+  // make 256), element 0 of the 254th array counting "a"
+  std::string deep_pointer = "/statistics/a";
+  for (int level = 0; level < 254; ++level) deep_pointer += "/0";
   const std::map<std::string, BadPlan> expected{
       {"invalid_json",
        {"parse",
@@ -381,6 +386,8 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
       {"actions_unsorted",
        {"parse", "/actions/2/start: actions must be sorted by start time (2 after 3)"}},
       {"statistics_array", {"parse", "/statistics: expected an object, got an array"}},
+      {"statistics_too_deep", {"parse", deep_pointer + ": nested deeper than 256 levels"}},
+      {"time_beyond_a_day", {"parse", "/robots/0/points/3/t: time 1e+07 s beyond a day (86400 s)"}},
       // against the world
       {"wrong_world",
        {"validate",

@@ -12,6 +12,7 @@
 
 #include "core/geometry.h"
 #include "core/world_io.h"
+#include "core/world_loader.h"
 
 using namespace dashbed::core;
 using Catch::Matchers::Contains;
@@ -319,7 +320,11 @@ const BadWorld kBadWorlds[] = {
     {"negative_object_size.yaml", "negative_object_size.yaml:22:18: objects[0].size[1]: must be > 0, got -0.04"},
     {"negative_mass.yaml", "negative_mass.yaml:21:11: objects[0].mass: must be > 0, got -0.1"},
     {"zero_friction.yaml", "zero_friction.yaml:21:15: objects[0].friction: must be > 0, got 0"},
-    {"time_step_range.yaml", "time_step_range.yaml:26:14: physics.time_step: must be in (0, 0.01] s, got 0.02"},
+    {"time_step_range.yaml", "time_step_range.yaml:26:14: physics.time_step: must be in [1e-05, 0.01] s, got 0.02"},
+    {"settle_time_range.yaml", "settle_time_range.yaml:26:16: physics.settle_time: must be in [0, 60] s, got 1e+300"},
+    {"gravity_range.yaml", "gravity_range.yaml:26:12: physics.gravity: must be at most 100 m/s^2 in magnitude, got 2000"},
+    {"mass_range.yaml", "mass_range.yaml:21:11: objects[0].mass: must be at most 1000 kg, got 5000"},
+    {"region_too_large.yaml", "region_too_large.yaml:15:12: fixtures[1].size[0]: must be at most 100 m, got 500"},
     {"solver_iterations_zero.yaml", "solver_iterations_zero.yaml:25:30: physics.solver_iterations: must be in [1, 1000000], got 0"},
     {"grip_force_range.yaml", "grip_force_range.yaml:26:15: controller.grip_force: must be in [20, 185] N (the Robotiq Hand-E range), got 200"},
     {"finger_speed_range.yaml", "finger_speed_range.yaml:26:17: controller.finger_speed: must be in [0.02, 0.15] m/s (the Robotiq Hand-E range), got 0.01"},
@@ -667,6 +672,15 @@ TEST_CASE("inline YAML: file name in messages and a few more cases", "[world_io]
                                         "objects: [{name: a, pose: {xyz: [0, 0, 0.0215]}}]\n",
                                  "inline.yaml"));
   }
+}
+
+TEST_CASE("a home angle outside its joint's limits is a world error naming robots[i].home[j]", "[world_io]") {
+  World world = loadWorldFile(kWorlds / "good/minimal.yaml");
+  world.robots[0].home[5] = 7.0;  // wrist 3 turns +-2 pi
+  CHECK_THROWS_MATCHES(validateWorld(world), WorldError,
+                       Catch::Matchers::Message((kWorlds / "good/minimal.yaml").string() +
+                                                ":6:5: robots[0].home[5]: wrist_3_joint at 7 rad is outside its "
+                                                "limits [-6.28319, 6.28319]"));
 }
 
 TEST_CASE("formatLocation", "[world_io]") {
