@@ -124,11 +124,13 @@ Millis HyperpathSearch::costToGo(int object, int task_vertex) const {
   return cost_to_go_.at(object).at(task_vertex);
 }
 
-void HyperpathSearch::updateCostToGo() {
+bool HyperpathSearch::updateCostToGo() {
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   const ObjectSites& sites = graph_->sites();
   const Millis dwell = ceilMillis(graph_->settings().transitions.gripper_dwell);
   const auto duration = [&](int h) { return graph_->bestDuration(h).value_or(dwell); };
+  cost_to_go_transitions_ = graph_->numTransitions();
+  const std::vector<std::vector<Millis>> before = std::move(cost_to_go_);
   cost_to_go_.assign(ts.numObjects(), std::vector<Millis>(ts.numVertices(), kUnreachable));
   for (int o = 0; o < ts.numObjects(); ++o) {
     std::vector<Millis>& cost = cost_to_go_[o];
@@ -161,6 +163,18 @@ void HyperpathSearch::updateCostToGo() {
         }
       }
     }
+  }
+  return cost_to_go_ != before;
+}
+
+void HyperpathSearch::rekeyFrontier() {
+  AStarState& a = *astar_;
+  std::vector<AStarState::Entry> entries;
+  for (; !a.frontier.empty(); a.frontier.pop()) entries.push_back(a.frontier.top());
+  for (AStarState::Entry& entry : entries) {
+    // a complete history's key is its makespan; the others' bounds can only have fallen
+    if (a.nodes[entry.node].final_moves.empty()) entry.f = lowerBound(a.nodes[entry.node]);
+    a.frontier.push(entry);
   }
 }
 
@@ -573,7 +587,7 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
 }
 
 SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
-  updateCostToGo();
+  const bool bounds_changed = updateCostToGo();
   const ObjectSites& sites = graph_->sites();
   if (!astar_) {
     astar_ = std::make_unique<AStarState>();
@@ -581,23 +595,40 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
       astar_->nodes.push_back(std::move(*start));
       astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
     }
+  } else if (bounds_changed) {
+    rekeyFrontier();  // transitions sampled since the last call (conflict resolution's detours)
   }
   AStarState& a = *astar_;
-  // the bodies' vertices (the dominance key) and their times
-  const auto signature = [](const TransitionHistory& h) {
+  // The dominance key: the bodies' vertices, and what else decides which transitions may come
+  // next, so that a history with the same key and no later times has every successor the other
+  // has: which robots have not acted yet (home constraints apply to them), each object's past
+  // holders (never handed back to), the transitions held that are in scheduling constraints.
+  // Then the times.
+  const auto signature = [&](const TransitionHistory& h) {
     std::vector<long long> key;
     std::vector<Millis> times;
     for (const auto& r : h.robots) {
       key.push_back(r.object);
       key.push_back(r.grasp);
+      key.push_back(r.free == 0);
       for (const double q : r.q) key.push_back(std::llround(q * 1e9));
       times.push_back(r.free);
     }
-    for (const auto& o : h.objects) {
-      key.push_back(static_cast<long long>(o.place));
-      key.push_back(o.holder);
-      times.push_back(o.since);
+    std::vector<long long> held_by(h.objects.size(), 0);  // [object] bit per robot
+    std::vector<long long> constrained;
+    for (const ScheduledTransition& step : h.steps) {
+      const TransitionSample& sample = graph_->transition(step.transition).sample;
+      if (sample.kind != TransitionKind::kPlace) held_by[sample.object] |= 1LL << sample.motions.back().robot;
+      if (graph_->schedulingConstrained(step.transition)) constrained.push_back(step.transition);
     }
+    for (std::size_t o = 0; o < h.objects.size(); ++o) {
+      key.push_back(static_cast<long long>(h.objects[o].place));
+      key.push_back(h.objects[o].holder);
+      key.push_back(held_by[o]);
+      times.push_back(h.objects[o].since);
+    }
+    std::sort(constrained.begin(), constrained.end());
+    key.insert(key.end(), constrained.begin(), constrained.end());  // last: the only part of varying length
     times.insert(times.end(), h.site_busy.begin(), h.site_busy.end());
     return std::make_pair(key, times);
   };
@@ -616,6 +647,10 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
     if (result.expansions >= budget.max_expansions || (budget.stop && budget.stop())) {
       result.status = SearchStatus::kBudget;
       return result;
+    }
+    if (graph_->numTransitions() != cost_to_go_transitions_ && updateCostToGo()) {
+      // the last expansion sampled a faster transition: every bound may be lower now
+      rekeyFrontier();
     }
     const AStarState::Entry entry = a.frontier.top();
     a.frontier.pop();

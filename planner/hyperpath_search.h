@@ -153,7 +153,11 @@ class HyperpathSearch {
   /// has filled (objects stay at their goals).
   bool placeBlocked(const TransitionHistory& history, int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
-  void updateCostToGo();
+  /// cost_to_go_ from the fastest sample of every hyperarc so far; whether it changed.
+  bool updateCostToGo();
+  /// The A*-like query's frontier keyed again by lowerBound, after the cost-to-go fell (a
+  /// sample faster than any before, sampled for a new grasp during the query).
+  void rekeyFrontier();
   /// placed_before_ from the place samples so far, when there are new ones.
   void updatePlacementOrder();
 
@@ -162,6 +166,7 @@ class HyperpathSearch {
   SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
   std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
+  std::size_t cost_to_go_transitions_ = 0;  ///< transitions sampled when cost_to_go_ was made
   std::vector<std::vector<int>> placed_before_;  ///< [object] see placedBefore()
   std::size_t placement_order_transitions_ = 0;  ///< transitions sampled when placed_before_ was made
   mutable std::vector<signed char> usable_;  ///< [transition] usable() this round: 1, 0, -1 unknown

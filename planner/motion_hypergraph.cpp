@@ -331,6 +331,15 @@ bool MotionHypergraph::schedulingConflict(int transition_a, int transition_b) co
              std::minmax(transition(transition_a).sample.hyperarc, transition(transition_b).sample.hyperarc));
 }
 
+bool MotionHypergraph::schedulingConstrained(int transition_id) const {
+  const int hyperarc = transition(transition_id).sample.hyperarc;
+  const auto in = [](const std::pair<int, int>& pair, int x) { return pair.first == x || pair.second == x; };
+  return std::any_of(scheduling_constraints_.begin(), scheduling_constraints_.end(),
+                     [&](const std::pair<int, int>& pair) { return in(pair, transition_id); }) ||
+         std::any_of(hyperarc_constraints_.begin(), hyperarc_constraints_.end(),
+                     [&](const std::pair<int, int>& pair) { return in(pair, hyperarc); });
+}
+
 bool MotionHypergraph::addHomeConstraint(int transition_id, int robot) {
   if (!home_constraints_.emplace(transition_id, robot).second) return false;
   const std::pair<int, int> key{transition(transition_id).sample.hyperarc, robot};

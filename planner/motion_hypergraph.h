@@ -163,6 +163,9 @@ class MotionHypergraph {
   /// transition).
   bool addSchedulingConstraint(int transition_a, int transition_b);
   bool schedulingConflict(int transition_a, int transition_b) const;
+  /// Whether `transition` is in some scheduling constraint's pair (or its hyperarc in a
+  /// hyperarc constraint's): a history holding it excludes other transitions.
+  bool schedulingConstrained(int transition) const;
   /// Vertex-hyperarc scheduling constraints on a robot's start (home) vertex: the transition's
   /// motion runs into `robot` standing at home, so a transition history may only include it
   /// once that robot has left home (taken a transition of its own). Promoted to the task-space

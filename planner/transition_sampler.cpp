@@ -160,8 +160,10 @@ std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, doub
         // across: the receiver's pads, kFingertipWidth wide along the giver's closing axis, fit
         // between the giver's fingers (a 30 mm cube leaves 0.4 mm beside a 29.2 mm pad)
         const double pad_offset = std::abs((grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_closing));
+        // (closing along the giver's approach axis: on the faces the giver's fingers leave free)
         const bool across = std::abs(approach.dot(giver_closing)) <= 0.5 &&
                             std::abs(approach.dot(giver_approach)) <= 0.5 &&
+                            std::abs(grasp.X_OT.linear().col(0).dot(giver_approach)) > 0.5 &&
                             pad_offset + kFingertipWidth / 2 + kHandoffClearance <= giver.finger;
         const bool head_on = approach.dot(giver_approach) < -0.5 &&
                              std::abs(grasp.X_OT.linear().col(1).dot(giver_width)) > 0.5 &&
