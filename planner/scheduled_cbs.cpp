@@ -13,7 +13,11 @@ namespace dashbed::planner {
 namespace {
 
 constexpr Millis kGridStep = 20;         // [ms] extra check times between key times
-constexpr double kStepHeadroom = 1.5;    // speed variation within a grid interval
+// Samples per grid interval over the steps of its chord: each robot moves along one piece of a
+// rest-to-rest trapezoidal profile there, whose speed is concave in time, so its peak within the
+// interval is at most twice its mean (accelerating from rest throughout), and samples evenly
+// spaced in time lie at most motion_step apart.
+constexpr double kStepHeadroom = 2.0;
 constexpr double kFarApart = 2.6;        // [m] bases farther apart than twice the reach + tool: never touch
 constexpr Millis kObstacleStep = 100;    // [ms] how often the other robot is sampled for a detour
 constexpr std::size_t kMaxObstacles = 30;  // more distinct states than this for a detour: the
