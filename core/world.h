@@ -157,6 +157,11 @@ inline constexpr int kWorldFormatVersion = 1;
 inline constexpr std::array<double, 6> kDefaultRobotHome{0.0, -1.5708, 1.5708,
                                                          -1.5708, -1.5708, 0.0};
 
+/// Most robots a world may have: the simulator gives every robot a bit of a 32-bit collision
+/// filter and the planner a bit of a 64-bit mask; far beyond any cell DaSH's representation
+/// can be built for.
+inline constexpr std::size_t kMaxRobots = 16;
+
 struct World {
   std::string name;
   std::string description;

@@ -688,6 +688,9 @@ World Reader::read(const YAML::Node& root) {
   const Field robots = map.require("robots");
   for (const Field& item : list(robots)) world.robots.push_back(robot(item));
   if (world.robots.empty()) fail(robots, "the world needs at least one robot");
+  if (world.robots.size() > kMaxRobots) {
+    fail(robots, "at most " + std::to_string(kMaxRobots) + " robots, not " + std::to_string(world.robots.size()));
+  }
 
   if (const auto f = map.get("fixtures")) {
     for (const Field& item : list(*f)) world.fixtures.push_back(fixture(item));

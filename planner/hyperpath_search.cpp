@@ -172,7 +172,8 @@ void HyperpathSearch::rekeyFrontier() {
   std::vector<AStarState::Entry> entries;
   for (; !a.frontier.empty(); a.frontier.pop()) entries.push_back(a.frontier.top());
   for (AStarState::Entry& entry : entries) {
-    // a complete history's key is its makespan; the others' bounds can only have fallen
+    // a complete history's key is its makespan; the others' bounds move with the cost-to-go
+    // (down for a faster sample, up where a hyperarc's first sample replaces the dwell time)
     if (a.nodes[entry.node].final_moves.empty()) entry.f = lowerBound(a.nodes[entry.node]);
     a.frontier.push(entry);
   }
@@ -596,7 +597,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
       astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
     }
   } else if (bounds_changed) {
-    rekeyFrontier();  // transitions sampled since the last call (conflict resolution's detours)
+    rekeyFrontier();  // transitions sampled since the last call (a query stopped at its budget)
   }
   AStarState& a = *astar_;
   // The dominance key: the bodies' vertices, and what else decides which transitions may come
@@ -614,6 +615,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
       for (const double q : r.q) key.push_back(std::llround(q * 1e9));
       times.push_back(r.free);
     }
+    static_assert(core::kMaxRobots < 64, "a bit per robot");
     std::vector<long long> held_by(h.objects.size(), 0);  // [object] bit per robot
     std::vector<long long> constrained;
     for (const ScheduledTransition& step : h.steps) {

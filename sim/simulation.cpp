@@ -27,6 +27,7 @@ using core::Pose;
 constexpr int kStaticBit = 1 << 0;
 constexpr int kObjectBit = 1 << 1;
 constexpr int robotBit(int r) { return 1 << (2 + r); }
+static_assert(2 + core::kMaxRobots < 32, "a collision filter bit per robot");
 constexpr int kAllBits = -1;
 
 // Collision margin of convex shapes [m]. Bullet's default (4 cm) rounds boxes visibly;

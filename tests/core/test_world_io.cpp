@@ -312,6 +312,7 @@ const BadWorld kBadWorlds[] = {
     {"missing_model.yaml", "missing_model.yaml:5:5: robots[0].model: missing (required)"},
     {"missing_object_pose.yaml", "missing_object_pose.yaml:19:5: objects[0].pose: missing (required)"},
     {"empty_robots.yaml", "empty_robots.yaml:4:9: robots: the world needs at least one robot"},
+    {"too_many_robots.yaml", "too_many_robots.yaml:5:3: robots: at most 16 robots, not 17"},
     // numbers out of range
     {"nan_coordinate.yaml", "nan_coordinate.yaml:7:25: robots[0].base.xyz[1]: expected a finite number, got '.nan'"},
     {"inf_mass.yaml", "inf_mass.yaml:21:11: objects[0].mass: expected a finite number, got '.inf'"},
