@@ -67,6 +67,7 @@ MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpa
     timing_.max_acceleration[j] = settings_.max_acceleration;
   }
   grasps_.resize(world.world->objects.size());
+  best_duration_.resize(task_space.numHyperarcs());
   folded_ = foldedConfigurations(*world.world, *scene_);
 
   // the start and goal decomposition (virtual source and target)
@@ -137,6 +138,8 @@ void MotionHypergraph::addTransition(TransitionSample sample) {
       break;
     }
   }
+  std::optional<Millis>& best = best_duration_[static_cast<std::size_t>(sample.hyperarc)];
+  if (!best || sample.duration < *best) best = sample.duration;
   transition.sample = std::move(sample);
   transitions_.push_back(std::move(transition));
 }
@@ -468,11 +471,7 @@ std::vector<int> MotionHypergraph::unsampledHyperarcs() const {
 }
 
 std::optional<Millis> MotionHypergraph::bestDuration(int hyperarc) const {
-  std::optional<Millis> best;
-  for (const MotionTransition& t : transitions_) {
-    if (t.sample.hyperarc == hyperarc && (!best || t.sample.duration < *best)) best = t.sample.duration;
-  }
-  return best;
+  return best_duration_.at(static_cast<std::size_t>(hyperarc));
 }
 
 }  // namespace dashbed::planner

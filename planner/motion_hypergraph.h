@@ -245,6 +245,7 @@ class MotionHypergraph {
   std::map<std::tuple<int, int, int, core::ArmConfig>, int> vertex_ids_;  // (task vertex, grasp, site, q)
   std::vector<std::vector<Grasp>> grasps_;                                // [object]
   std::deque<MotionTransition> transitions_;  // a deque: references stay valid as it grows
+  std::vector<std::optional<Millis>> best_duration_;  // [task-space hyperarc] see bestDuration()
   std::map<std::pair<int, int>, std::vector<int>> transitions_of_;        // (hyperarc, grasp)
   std::map<std::tuple<int, int, int>, Roadmap> roadmaps_;                 // (robot, object, grasp)
   std::map<std::tuple<int, int, int>, int> grown_this_round_;             // samples added by move()
