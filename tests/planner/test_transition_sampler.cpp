@@ -516,6 +516,25 @@ TEST_CASE("Handoffs between adjacent robots of the four-robot world", "[planner]
   REQUIRE(tried.size() == 8);
 }
 
+TEST_CASE("A receiver closes on the faces of a cube the giver's fingers leave free", "[planner][transition]") {
+  const Setup& s = world("default.yaml");
+  TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
+  for (const int pick : s.hyperarcs(TransitionKind::kPick)) {
+    const int object = s.task_space.hyperarcs()[static_cast<std::size_t>(pick)].object;
+    for (const TransitionSample& sample : sampler.pick(pick)) {
+      const Grasp& giver = *sample.grasp_after;
+      const std::vector<Grasp> received = sampler.handoffGrasps(object, giver);
+      REQUIRE_FALSE(received.empty());
+      for (const Grasp& grasp : received) {
+        // the receiver's closing axis along the giver's approach, so its pads sit on the two
+        // faces between the giver's fingers, not on the giver's pads
+        CHECK(std::abs(grasp.X_OT.linear().col(0).dot(giver.X_OT.linear().col(2))) > 0.99);
+        CHECK(std::abs(grasp.X_OT.linear().col(0).dot(giver.X_OT.linear().col(0))) < 0.01);
+      }
+    }
+  }
+}
+
 TEST_CASE("The transition sampler rejects hyperarcs of the wrong kind", "[planner][transition]") {
   const Setup& s = world("default.yaml");
   TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
