@@ -13,11 +13,6 @@ namespace dashbed::planner {
 namespace {
 
 constexpr Millis kGridStep = 20;         // [ms] extra check times between key times
-// Samples per grid interval over the steps of its chord: each robot moves along one piece of a
-// rest-to-rest trapezoidal profile there, whose speed is concave in time, so its peak within the
-// interval is at most twice its mean (accelerating from rest throughout), and samples evenly
-// spaced in time lie at most motion_step apart.
-constexpr double kStepHeadroom = 2.0;
 constexpr double kFarApart = 2.6;        // [m] bases farther apart than twice the reach + tool: never touch
 constexpr Millis kObstacleStep = 100;    // [ms] how often the other robot is sampled for a detour
 constexpr std::size_t kMaxObstacles = 30;  // more distinct states than this for a detour: the
@@ -159,24 +154,45 @@ class ScheduleView {
     return state;
   }
 
+  /// Over [t0, t1], which no point time of `robot` lies strictly within: its peak speed over its
+  /// mean speed (restToRestPeakOverMean on a move's piece; 1 along a transition's keys, which
+  /// are interpolated at constant speed, or standing).
+  double peakOverMeanSpeed(int robot, double t0, double t1) const {
+    const int item = at(robot, t0, true).item;
+    if (item < 0) return 1.0;
+    const ScheduleSegment& seg = schedule_->segments[timelines_[robot].segments[item]];
+    const std::vector<Millis>& times = timelines_[robot].times[item];
+    if (seg.move == nullptr || seg.move->path.size() < 2) return 1.0;
+    const double start = starts_[robot][item];
+    const std::size_t i = pieceAt(times, t0 - start, true);
+    const double piece_start = start + toSeconds(times[i]);
+    return restToRestPeakOverMean(seg.move->path[i], seg.move->path[i + 1], times[i + 1] - times[i],
+                                  t0 - piece_start, t1 - piece_start, graph_->timing());
+  }
+
   /// The configuration the collision checker wants for `robot` in `state`.
   Eigen::VectorXd full(int robot, const RobotState& state) const {
     return graph_->scene().configuration(robot, state.q, state.finger);
   }
 
  private:
-  void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
-                RobotState& state) const {
-    // the piece i with times[i] <= tau < times[i + 1] (or <= with !after); tau, a difference of
-    // seconds, may miss a whole-millisecond key by a rounding error (1.009 s is 1008.9999... ms):
-    // at a key it counts as the key
+  /// The piece i of a segment with point times `times` with times[i] <= tau < times[i + 1] (or
+  /// <= with !after), tau [s] from the segment's start; tau, a difference of seconds, may miss a
+  /// whole-millisecond key by a rounding error (1.009 s is 1008.9999... ms): at a key it counts
+  /// as the key.
+  static std::size_t pieceAt(const std::vector<Millis>& times, double tau, bool after) {
     const double tau_ms = snapToMillis(tau * 1000.0);
     const auto next = after ? std::upper_bound(times.begin() + 1, times.end(), tau_ms,
                                                [](double v, Millis x) { return v < static_cast<double>(x); })
                             : std::lower_bound(times.begin() + 1, times.end(), tau_ms,
                                                [](Millis x, double v) { return static_cast<double>(x) < v; });
-    const std::size_t i = std::min<std::size_t>(static_cast<std::size_t>(next - times.begin()) - 1,
-                                                times.size() >= 2 ? times.size() - 2 : 0);
+    return std::min<std::size_t>(static_cast<std::size_t>(next - times.begin()) - 1,
+                                 times.size() >= 2 ? times.size() - 2 : 0);
+  }
+
+  void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
+                RobotState& state) const {
+    const std::size_t i = pieceAt(times, tau, after);
     if (seg.motion != nullptr) {
       const TransitionMotion& m = *seg.motion;
       if (times.size() == 1) {
@@ -516,7 +532,11 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
           standing = still ? std::optional(std::pair{a0, b0}) : std::nullopt;
           continue;
         }
-        const int steps = static_cast<int>(std::ceil(kStepHeadroom * std::max(steps_a, steps_b)));
+        // evenly in time, so that no point moves more than motion_step between samples where
+        // the robot moves fastest within the interval
+        const int steps = static_cast<int>(std::ceil(std::max(view.peakOverMeanSpeed(a, t0, t1) * steps_a,
+                                                              view.peakOverMeanSpeed(b, t0, t1) * steps_b) -
+                                                     1e-9));
         // the interval's own fingers and held objects, also at its end
         const auto state_at = [&](int r, int k, const RobotState& s0, const RobotState& s1) {
           const RobotState s = k == 0 ? s0 : k == steps ? s1 : view.at(r, t0 + (t1 - t0) * k / steps, true);

@@ -27,8 +27,8 @@
 // both robots' exact configurations at a grid of times fine enough that no point of either
 // robot (held object included) moves more than the collision scene's motion_step between two
 // checks, so the margin covers the motion in between (times of every segment and key, plus a
-// 20 ms grid, each interval split by CollisionScene::motionSteps with 2x headroom for the
-// speed varying within it: a piece of a trapezoidal profile peaks at most at twice its mean). Samples, and whole intervals, within the clearance of the last
+// 20 ms grid, each interval split by CollisionScene::motionSteps times the robot's peak over
+// mean speed within it: up to 2 on a trapezoidal move accelerating from rest). Samples, and whole intervals, within the clearance of the last
 // sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. At the
 // earliest conflict, between item A of robot a and item B of
 // robot b (an item is a segment, or the robot standing still between two segments), the node

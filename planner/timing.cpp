@@ -77,6 +77,21 @@ std::pair<core::ArmConfig, core::ArmConfig> restToRestAt(const core::ArmConfig& 
   return {q, qd};
 }
 
+double restToRestPeakOverMean(const core::ArmConfig& a, const core::ArmConfig& b, Millis duration, double t0,
+                              double t1, const TimingLimits& limits) {
+  const PathProfile p = profile(a, b, limits);
+  const double total = toSeconds(duration);
+  t0 = std::clamp(t0, 0.0, total);
+  t1 = std::clamp(t1, 0.0, total);
+  if (p.duration == 0.0 || t1 <= t0) return 1.0;
+  const double stretch = p.duration / total;
+  const double moved = trapezoid(p, t1 * stretch).first - trapezoid(p, t0 * stretch).first;
+  // the speed rises to the middle of the move and falls after it: the peak over [t0, t1] is
+  // at its point nearest the middle
+  const double peak = trapezoid(p, std::clamp(0.5 * total, t0, t1) * stretch).second * stretch;
+  return moved > 0.0 ? std::max(1.0, peak * (t1 - t0) / moved) : 1.0;
+}
+
 TimedSample restToRestSample(const core::ArmConfig& a, const core::ArmConfig& b, Millis duration, Millis t,
                              const TimingLimits& limits) {
   const auto [q, qd] = restToRestAt(a, b, duration, toSeconds(t), limits);
