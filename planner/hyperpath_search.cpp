@@ -31,7 +31,8 @@ struct HyperpathSearch::AStarState {
   std::vector<TransitionHistory> nodes;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> frontier;
   std::uint64_t pushed = 0;
-  /// Dominance: histories with the same bodies at the same vertices, by their times.
+  /// Dominance: histories with the same key (nextBest's signature: the bodies' vertices and what
+  /// decides which transitions may follow), by their times.
   std::map<std::vector<long long>, std::vector<std::vector<Millis>>> seen;
 };
 
