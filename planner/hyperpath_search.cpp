@@ -31,6 +31,7 @@ struct HyperpathSearch::AStarState {
   std::vector<TransitionHistory> nodes;
   std::priority_queue<Entry, std::vector<Entry>, std::greater<>> frontier;
   std::uint64_t pushed = 0;
+  std::uint64_t keyed_version = 0;  ///< the cost-to-go version the frontier's keys come from
   /// Dominance: histories with the same key (nextBest's signature: the bodies' vertices and what
   /// decides which transitions may follow), by their times.
   std::map<std::vector<long long>, std::vector<std::vector<Millis>>> seen;
@@ -125,7 +126,8 @@ Millis HyperpathSearch::costToGo(int object, int task_vertex) const {
   return cost_to_go_.at(object).at(task_vertex);
 }
 
-bool HyperpathSearch::updateCostToGo() {
+void HyperpathSearch::updateCostToGo() {
+  if (!cost_to_go_.empty() && graph_->numTransitions() == cost_to_go_transitions_) return;
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
   const ObjectSites& sites = graph_->sites();
   const Millis dwell = ceilMillis(graph_->settings().transitions.gripper_dwell);
@@ -165,7 +167,7 @@ bool HyperpathSearch::updateCostToGo() {
       }
     }
   }
-  return cost_to_go_ != before;
+  if (cost_to_go_ != before) ++cost_to_go_version_;
 }
 
 void HyperpathSearch::rekeyFrontier() {
@@ -178,6 +180,7 @@ void HyperpathSearch::rekeyFrontier() {
     if (a.nodes[entry.node].final_moves.empty()) entry.f = lowerBound(a.nodes[entry.node]);
     a.frontier.push(entry);
   }
+  a.keyed_version = cost_to_go_version_;
 }
 
 std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const TransitionHistory& history) {
@@ -258,7 +261,7 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
   if (!placeBlocked(history, arc.robot, o, history.robots[arc.robot].grasp)) return false;
   return std::none_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
     const TransitionSample& sample = graph_->transition(step.transition).sample;
-    return sample.object == o && sample.kind != TransitionKind::kPlace && sample.motions.back().robot == arc.receiver;
+    return sample.object == o && sample.holderAfter() == arc.receiver;
   });
 }
 
@@ -589,7 +592,6 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
 }
 
 SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
-  const bool bounds_changed = updateCostToGo();
   const ObjectSites& sites = graph_->sites();
   if (!astar_) {
     astar_ = std::make_unique<AStarState>();
@@ -597,8 +599,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
       astar_->nodes.push_back(std::move(*start));
       astar_->frontier.push({lowerBound(astar_->nodes.back()), astar_->pushed++, 0});
     }
-  } else if (bounds_changed) {
-    rekeyFrontier();  // transitions sampled since the last call (a query stopped at its budget)
+    astar_->keyed_version = cost_to_go_version_;
   }
   AStarState& a = *astar_;
   // The dominance key: the bodies' vertices, and what else decides which transitions may come
@@ -621,7 +622,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
     std::vector<long long> constrained;
     for (const ScheduledTransition& step : h.steps) {
       const TransitionSample& sample = graph_->transition(step.transition).sample;
-      if (sample.kind != TransitionKind::kPlace) held_by[sample.object] |= 1LL << sample.motions.back().robot;
+      if (const int holder = sample.holderAfter(); holder >= 0) held_by[sample.object] |= 1LL << holder;
       if (graph_->schedulingConstrained(step.transition)) constrained.push_back(step.transition);
     }
     for (std::size_t o = 0; o < h.objects.size(); ++o) {
@@ -651,10 +652,10 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
       result.status = SearchStatus::kBudget;
       return result;
     }
-    if (graph_->numTransitions() != cost_to_go_transitions_ && updateCostToGo()) {
-      // the last expansion sampled a faster transition: every bound may be lower now
-      rekeyFrontier();
-    }
+    // transitions sampled by the last expansion (or since the last call) move the bounds: down
+    // for a sample faster than any before, up where a hyperarc's first sample replaces the dwell
+    updateCostToGo();
+    if (a.keyed_version != cost_to_go_version_) rekeyFrontier();
     const AStarState::Entry entry = a.frontier.top();
     a.frontier.pop();
     if (!a.nodes[entry.node].final_moves.empty()) {  // a complete history: the next best

@@ -153,10 +153,10 @@ class HyperpathSearch {
   /// has filled (objects stay at their goals).
   bool placeBlocked(const TransitionHistory& history, int robot, int object, int grasp) const;
   Millis lowerBound(const TransitionHistory& history) const;
-  /// cost_to_go_ from the fastest sample of every hyperarc so far; whether it changed.
-  bool updateCostToGo();
-  /// The A*-like query's frontier keyed again by lowerBound, after the cost-to-go fell (a
-  /// sample faster than any before, sampled for a new grasp during the query).
+  /// cost_to_go_ from the fastest sample of every hyperarc, when transitions were sampled since
+  /// it was made; cost_to_go_version_ counts its changes.
+  void updateCostToGo();
+  /// The A*-like query's frontier keyed again by lowerBound, after the cost-to-go changed.
   void rekeyFrontier();
   /// placed_before_ from the place samples so far, when there are new ones.
   void updatePlacementOrder();
@@ -167,6 +167,7 @@ class HyperpathSearch {
   std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
   std::size_t cost_to_go_transitions_ = 0;  ///< transitions sampled when cost_to_go_ was made
+  std::uint64_t cost_to_go_version_ = 0;      ///< changes of cost_to_go_ so far
   std::vector<std::vector<int>> placed_before_;  ///< [object] see placedBefore()
   std::size_t placement_order_transitions_ = 0;  ///< transitions sampled when placed_before_ was made
   mutable std::vector<signed char> usable_;  ///< [transition] usable() this round: 1, 0, -1 unknown

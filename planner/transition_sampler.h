@@ -95,6 +95,10 @@ struct TransitionSample {
   /// The window of the plan action (core::PlanAction start/end), from the transition's start.
   Millis action_start = 0;
   Millis action_end = 0;
+
+  /// The robot holding the object once the transition is done (the picking or receiving
+  /// robot), or -1 after a place.
+  int holderAfter() const { return kind == TransitionKind::kPlace ? -1 : motions.back().robot; }
 };
 
 struct TransitionSettings {
