@@ -1,6 +1,7 @@
 // Time parameterisation: rest-to-rest synchronised trapezoids within the limits, on the line.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 #include "planner/timing.h"
@@ -53,7 +54,7 @@ TEST_CASE("the time-optimal duration follows the trapezoid and triangle profiles
   const core::ArmConfig a{0.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const core::ArmConfig b{1.0, 0.0, 0.0, 0.0, 0.0, 0.0};
   const TimingLimits l = limits();
-  // joint 1: 1 rad at 2 rad/s, 4 rad/s^2: ramps of 0.5 s covering 0.5 rad, then 0.25 s cruise
+  // joint 1: 1 rad at 2 rad/s, 4 rad/s^2: two ramps of 0.5 s and 0.5 rad each, no cruise
   CHECK(restToRestDuration(a, b, l) == 1000);
   const core::ArmConfig c{0.25, 0.0, 0.0, 0.0, 0.0, 0.0};  // triangle: 2 sqrt(0.25 / 4) = 0.5 s
   CHECK(restToRestDuration(a, c, l) == 500);
@@ -71,6 +72,11 @@ TEST_CASE("an interval's peak speed over its mean speed bounds the spacing of ev
   CHECK(restToRestPeakOverMean(a, b, duration, 0.6, 0.62, l) == Approx(1.0));  // cruising
   CHECK(restToRestPeakOverMean(a, a, 0, 0.0, 0.02, l) == 1.0);
   CHECK(restToRestPeakOverMean(a, b, duration, 0.3, 0.3, l) == 1.0);
+  // a triangle (0.25 rad in 0.5 s): over the whole move the peak, 1 rad/s at the middle, is
+  // twice the mean; around the middle the speed hardly changes
+  const core::ArmConfig c{0.25, 0.0, 0.0, 0.0, 0.0, 0.0};
+  CHECK(restToRestPeakOverMean(a, c, 500, 0.0, 0.5, l) == Approx(2.0));
+  CHECK(restToRestPeakOverMean(a, c, 500, 0.24, 0.26, l) == Approx(1.0 / 0.98));
   // the largest step between n samples over [t0, t1] is at most ratio / n of the way
   for (int i = 0; i < 75; ++i) {
     const double t0 = 0.02 * i, t1 = t0 + 0.013 + 0.004 * (i % 5);
