@@ -256,11 +256,24 @@ bool isNonFiniteWord(std::string_view text) {
          text == ".NAN";
 }
 
+/// Whether a scalar's tag lets it be a number: none (a plain scalar) or YAML's own !!int, and
+/// !!float where fractions are allowed. Empty when it does, else what to say about the tag.
+std::string numberTagProblem(const YAML::Node& node, bool integer) {
+  const std::string yaml_tag = "tag:yaml.org,2002:";
+  const std::string& tag = node.Tag();
+  if (tag == "?" || tag == yaml_tag + "int" || (!integer && tag == yaml_tag + "float")) return "";
+  if (tag == "!") return "the quoted string " + describe(node);
+  const std::string shown = tag.rfind(yaml_tag, 0) == 0 ? "!!" + tag.substr(yaml_tag.size()) : tag;
+  return describe(node) + " tagged " + shown;
+}
+
 double Reader::number(const Field& field) const {
   const YAML::Node& node = field.value;
   if (!node.IsScalar()) fail(field, "expected a number, got " + describe(node));
   const std::string& scalar = node.Scalar();
-  if (node.Tag() == "!") fail(field, "expected a number, got the quoted string " + describe(node));
+  if (const std::string problem = numberTagProblem(node, false); !problem.empty()) {
+    fail(field, "expected a number, got " + problem);
+  }
   if (isNonFiniteWord(scalar)) fail(field, "expected a finite number, got " + describe(node));
   std::string_view digits = scalar;
   if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);
@@ -278,8 +291,9 @@ double Reader::number(const Field& field) const {
 
 int Reader::integer(const Field& field) const {
   const YAML::Node& node = field.value;
-  if (!node.IsScalar() || node.Tag() == "!") {
-    fail(field, "expected an integer, got " + describe(node));
+  if (!node.IsScalar()) fail(field, "expected an integer, got " + describe(node));
+  if (const std::string problem = numberTagProblem(node, true); !problem.empty()) {
+    fail(field, "expected an integer, got " + problem);
   }
   std::string_view digits = node.Scalar();
   if (!digits.empty() && digits[0] == '+') digits.remove_prefix(1);

@@ -148,6 +148,7 @@ struct ObjectData {
 struct StaticData {
   std::vector<core::Box> boxes;
   std::vector<int> owner;     // the robot whose pedestal a box is, or -1
+  std::vector<std::string> name;  // for messages: "fixture 'table'", "the floor", ...
   std::vector<Frame> frames;  // the boxes' poses
   std::vector<Vector3d> half;
   std::vector<double> radius;
@@ -420,6 +421,14 @@ void rotateAboutAxis(Frame& X, const Body& body, double angle) {
 
 }  // namespace
 
+/// A colliding pair a check found: a body of the robot checked (kHeldBody: the object it holds)
+/// and the part it hits: a static box, or a body of the same or another robot (or kHeldBody).
+struct Hit {
+  int body = -1;
+  int other = -1;
+};
+constexpr int kHeldBody = -2;
+
 /// The mutable state of the queries: one per checker (and one for building the scene).
 struct CheckerState {
   /// One robot's configuration being checked: body poses, lazily placed shapes, held object.
@@ -607,10 +616,12 @@ struct CheckerState {
 
   // ---- checks of one configuration ----
 
-  bool staticCollision(Slot& slot) {
+  /// The first body (or the held object) found against the static scene, with the box it hits.
+  std::optional<Hit> staticHit(Slot& slot) {
     const RobotData& robot = *slot.robot;
     const StaticData& statics = scene->statics;
     const int self = static_cast<int>(slot.robot - scene->robots.data());
+    int box = -1;
     for (int b : robot.static_order) {
       const Body& body = robot.bodies[b];
       const Vector3d& c = slot.c_WB[b];
@@ -618,34 +629,41 @@ struct CheckerState {
         if (statics.owner[k] == self || sphereObbApart(c, body.radius, statics.frames[k], statics.half[k])) return false;
         const Placed fixture = placedStatic(k);
         for (int s = body.shape_begin; s < body.shape_end; ++s) {
-          if (shapesCollide(placedShape(slot, s), fixture)) return true;
+          if (shapesCollide(placedShape(slot, s), fixture)) {
+            box = k;
+            return true;
+          }
         }
         return false;
       });
-      if (hit) return true;
+      if (hit) return Hit{b, box};
     }
     if (slot.holding && slot.held_static) {
       const Placed held = placedHeld(slot);
-      const bool hit = forStaticNear(slot.X_WH.p, held.radius,
-                                     [&](int k) { return statics.owner[k] != self && shapesCollide(held, placedStatic(k)); });
-      if (hit) return true;
+      const bool hit = forStaticNear(slot.X_WH.p, held.radius, [&](int k) {
+        if (statics.owner[k] == self || !shapesCollide(held, placedStatic(k))) return false;
+        box = k;
+        return true;
+      });
+      if (hit) return Hit{kHeldBody, box};
     }
-    return false;
+    return std::nullopt;
   }
 
-  bool selfCollision(Slot& slot) {
+  /// The first pair of the robot's bodies (or a body and the held object) found colliding.
+  std::optional<Hit> selfHit(Slot& slot) {
     const RobotData& robot = *slot.robot;
     for (const auto& [a, b] : robot.self_pairs) {
-      if (bodiesCollide(slot, a, slot, b)) return true;
+      if (bodiesCollide(slot, a, slot, b)) return Hit{a, b};
     }
     if (slot.holding) {
       const Placed held = placedHeld(slot);
       for (std::size_t b = robot.bodies.size(); b-- > 0;) {
         if (robot.bodies[b].finger) continue;
-        if (bodyHits(slot, static_cast<int>(b), held)) return true;
+        if (bodyHits(slot, static_cast<int>(b), held)) return Hit{static_cast<int>(b), kHeldBody};
       }
     }
-    return false;
+    return std::nullopt;
   }
 
   bool objectCollision(Slot& slot, std::span<const RestingObject> objects) {
@@ -678,7 +696,7 @@ struct CheckerState {
   }
 
   bool robotCollision(Slot& slot, std::span<const RestingObject> objects) {
-    return staticCollision(slot) || selfCollision(slot) || objectCollision(slot, objects);
+    return staticHit(slot) || selfHit(slot) || objectCollision(slot, objects);
   }
 
   static void updateBounds(Slot& slot, const ObjectData* held) {
@@ -699,7 +717,8 @@ struct CheckerState {
   }
 
   /// Robot against robot. Both slots hold evaluated configurations.
-  bool interRobotCollision(Slot& A, Slot& B) {
+  /// The first pair found colliding: a body of A's robot (or its held object) and one of B's.
+  std::optional<Hit> interRobotHit(Slot& A, Slot& B) {
     const ObjectData* held_a = A.holding ? &scene->objects[A.held_object] : nullptr;
     const ObjectData* held_b = B.holding ? &scene->objects[B.held_object] : nullptr;
     updateBounds(A, held_a);
@@ -713,11 +732,11 @@ struct CheckerState {
       if (body_a.radius < 0.0 || sphereAabbApart(A.c_WB[a], body_a.radius, B.lo, B.hi)) continue;
       for (std::size_t b = rb.bodies.size(); b-- > 0;) {
         if (!body_a.moves && !rb.bodies[b].moves) continue;
-        if (bodiesCollide(A, static_cast<int>(a), B, static_cast<int>(b))) return true;
+        if (bodiesCollide(A, static_cast<int>(a), B, static_cast<int>(b))) return Hit{static_cast<int>(a), static_cast<int>(b)};
       }
       if (held_b != nullptr && !(shared && body_a.finger) &&
           bodyHits(A, static_cast<int>(a), placedHeld(B))) {
-        return true;
+        return Hit{static_cast<int>(a), kHeldBody};
       }
     }
     if (held_a != nullptr) {
@@ -725,12 +744,12 @@ struct CheckerState {
       if (!sphereAabbApart(A.X_WH.p, held.radius, B.lo, B.hi)) {
         for (std::size_t b = rb.bodies.size(); b-- > 0;) {
           if (shared && rb.bodies[b].finger) continue;
-          if (bodyHits(B, static_cast<int>(b), held)) return true;
+          if (bodyHits(B, static_cast<int>(b), held)) return Hit{kHeldBody, static_cast<int>(b)};
         }
-        if (held_b != nullptr && !shared && shapesCollide(held, placedHeld(B))) return true;
+        if (held_b != nullptr && !shared && shapesCollide(held, placedHeld(B))) return Hit{kHeldBody, kHeldBody};
       }
     }
-    return false;
+    return std::nullopt;
   }
 
   // ---- motions ----
@@ -1115,17 +1134,20 @@ CollisionScene::CollisionScene(const core::World& world, const core::RobotSet& r
   detail::StaticData& statics = data.statics;
   for (const core::FixtureSpec& fixture : world.fixtures) {
     statics.boxes.insert(statics.boxes.end(), fixture.boxes.begin(), fixture.boxes.end());
+    statics.name.insert(statics.name.end(), fixture.boxes.size(), "fixture '" + fixture.name + "'");
   }
   core::Box floor;
   floor.X_WB = Pose::Identity();
   floor.X_WB.translation() = Vector3d(0.0, 0.0, -detail::kFloorThickness / 2.0);
   floor.size = Vector3d(detail::kFloorExtent, detail::kFloorExtent, detail::kFloorThickness);
   statics.boxes.push_back(floor);
+  statics.name.emplace_back("the floor");
   statics.owner.assign(statics.boxes.size(), -1);
   for (std::size_t r = 0; r < data.robots.size(); ++r) {
     for (const core::Box& box : pedestalBoxes(data.robots[r])) {
       statics.boxes.push_back(box);
       statics.owner.push_back(static_cast<int>(r));
+      statics.name.push_back("the base of robot '" + robots[r].spec->name + "'");
     }
   }
   for (std::size_t k = 0; k < statics.boxes.size(); ++k) {
@@ -1257,6 +1279,31 @@ bool CollisionChecker::robotFree(int robot, const Eigen::VectorXd& q, std::span<
   return !state_->robotCollision(slot, objects);
 }
 
+std::string CollisionChecker::robotContact(int robot, const Eigen::VectorXd& q) {
+  const detail::SceneData& scene = *scene_->data_;
+  const RobotData& data = requireRobot(scene, robot);
+  requireConfiguration(data, q, "q");
+  auto& slot = state_->slots[robot];
+  state_->forward(slot, data, q, std::nullopt);
+  if (const std::optional<detail::Hit> hit = state_->staticHit(slot)) {
+    return "its " + data.bodies[hit->body].name + " and " + scene.statics.name[hit->other];
+  }
+  if (const std::optional<detail::Hit> hit = state_->selfHit(slot)) {
+    return "its " + data.bodies[hit->body].name + " and its " + data.bodies[hit->other].name;
+  }
+  return "";
+}
+
+std::string CollisionChecker::robotsContact(int robot_a, const Eigen::VectorXd& q_a, int robot_b,
+                                            const Eigen::VectorXd& q_b) {
+  if (robotsFree(robot_a, q_a, std::nullopt, robot_b, q_b, std::nullopt)) return "";
+  const detail::SceneData& scene = *scene_->data_;
+  const detail::Hit hit = *state_->interRobotHit(state_->slots[robot_a], state_->slots[robot_b]);
+  return "its " + scene.robots[robot_a].bodies[hit.body].name + " and robot '" +
+         (*scene.robot_set)[static_cast<std::size_t>(robot_b)].spec->name + "''s " +
+         scene.robots[robot_b].bodies[hit.other].name;
+}
+
 std::pair<Eigen::Vector3d, Eigen::Vector3d> CollisionChecker::robotBounds(int robot, const Eigen::VectorXd& q,
                                                                          const std::optional<HeldObject>& held) {
   const detail::SceneData& scene = *scene_->data_;
@@ -1282,7 +1329,7 @@ bool CollisionChecker::robotsFree(int robot_a, const Eigen::VectorXd& q_a, const
   requireHeld(scene, held_b);
   state_->forward(state_->slots[robot_a], a, q_a, held_a);
   state_->forward(state_->slots[robot_b], b, q_b, held_b);
-  return !state_->interRobotCollision(state_->slots[robot_a], state_->slots[robot_b]);
+  return !state_->interRobotHit(state_->slots[robot_a], state_->slots[robot_b]);
 }
 
 namespace {
@@ -1498,7 +1545,7 @@ std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const E
   std::size_t left = 0;
   // stops at a collision with the static scene or itself, or when nothing is left to find
   state.sweep(slot, data, q_from, q_to, held, n, [&](double) {
-    if (check_robot && (state.staticCollision(slot) || state.selfCollision(slot))) return collides = true;
+    if (check_robot && (state.staticHit(slot) || state.selfHit(slot))) return collides = true;
     if (first || left > 0) detail::CheckerState::updateBounds(slot, held_data);
     if (first) {
       first = false;
@@ -1543,7 +1590,7 @@ bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from,
   return !state.sweep(slot_a, a, q_a_from, q_a_to, held_a, n, [&](double s) {
     state.q_b.noalias() = q_b_from + s * (q_b_to - q_b_from);
     state.forward(slot_b, b, state.q_b, held_b);
-    return state.interRobotCollision(slot_a, slot_b);
+    return state.interRobotHit(slot_a, slot_b).has_value();
   });
 }
 
@@ -1581,7 +1628,7 @@ bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, c
     state.forward(slot, data, state.q_a, held);
     double clearance = std::numeric_limits<double>::infinity();
     for (auto& other : state.standing) {
-      if (state.interRobotCollision(slot, other)) return false;
+      if (state.interRobotHit(slot, other)) return false;
       const double gap = boxesGap({slot.lo, slot.hi}, {other.lo, other.hi});
       if (gap > 0.0) clearance = std::min(clearance, gap);
     }

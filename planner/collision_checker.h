@@ -220,6 +220,14 @@ class CollisionChecker {
   bool robotsFree(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,
                   int robot_b, const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b);
 
+  /// For messages: the first collision robotFree(robot, q, {}) finds, as "its <link> and
+  /// <part>", the part being "fixture '<name>'", "the floor", "the base of robot '<name>'" or
+  /// "its <link>"; empty when the robot is free.
+  std::string robotContact(int robot, const Eigen::VectorXd& q);
+  /// For messages: the first collision robotsFree finds between the two robots (holding
+  /// nothing), as "its <link> and robot '<name>''s <link>"; empty when they are free.
+  std::string robotsContact(int robot_a, const Eigen::VectorXd& q_a, int robot_b, const Eigen::VectorXd& q_b);
+
   /// The straight joint-space motion q_from -> q_to of one robot, checked like robotFree at
   /// CollisionScene::motionSteps samples (both ends included) in bisection order (midpoint
   /// first, then the quarter points, ...) so that blocked motions fail early.

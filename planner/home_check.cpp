@@ -18,16 +18,16 @@ void requireFreeHomes(const core::World& world, const CollisionScene& scene) {
            world.robots[r].name + "'";
   };
   for (std::size_t r = 0; r < world.robots.size(); ++r) {
-    if (!checker.robotFree(static_cast<int>(r), at_home(r), {})) {
-      throw core::WorldError(field(r) +
-                             " collides with a fixture, the floor, another robot's pedestal or itself at its home "
-                             "configuration (gripper open); move its base or change its home angles");
+    if (const std::string contact = checker.robotContact(static_cast<int>(r), at_home(r)); !contact.empty()) {
+      throw core::WorldError(field(r) + " collides at its home configuration (gripper open): " + contact +
+                             "; move its base or change its home angles");
     }
     for (std::size_t s = 0; s < r; ++s) {
-      if (!checker.robotsFree(static_cast<int>(r), at_home(r), std::nullopt, static_cast<int>(s), at_home(s),
-                              std::nullopt)) {
+      const std::string contact = checker.robotsContact(static_cast<int>(r), at_home(r), static_cast<int>(s), at_home(s));
+      if (!contact.empty()) {
         throw core::WorldError(field(r) + " collides with robot '" + world.robots[s].name +
-                               "' when both stand at their home configurations; move their bases apart");
+                               "' when both stand at their home configurations: " + contact +
+                               "; move their bases apart or change their home angles");
       }
     }
   }

@@ -300,6 +300,8 @@ const BadWorld kBadWorlds[] = {
     {"mass_string.yaml", "mass_string.yaml:21:11: objects[0].mass: expected a number, got 'heavy'"},
     {"mass_empty.yaml", "mass_empty.yaml:21:5: objects[0].mass: expected a number, got nothing"},
     {"quoted_number.yaml", "quoted_number.yaml:21:11: objects[0].mass: expected a number, got the quoted string '0.1'"},
+    {"tagged_number.yaml", "tagged_number.yaml:21:11: objects[0].mass: expected a number, got '0.1' tagged !!str"},
+    {"version_tagged_float.yaml", "version_tagged_float.yaml:2:16: dashbed_world: expected an integer, got '1' tagged !!float"},
     {"robots_map.yaml", "robots_map.yaml:5:3: robots: expected a list, got a map"},
     {"pose_scalar.yaml", "pose_scalar.yaml:22:11: objects[0].pose: expected a map, got '0.5'"},
     {"xyz_two_numbers.yaml", "xyz_two_numbers.yaml:22:17: objects[0].pose.xyz: expected a list of 3 numbers, got 2 items"},

@@ -457,6 +457,56 @@ TEST_CASE("robotsFree agrees with a brute-force FCL check on random configuratio
   CHECK(free < kSamples * 9 / 10);
 }
 
+TEST_CASE("robotContact and robotsContact name a collision exactly when robotFree and robotsFree find one",
+          "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  CollisionChecker dut(sortingScene());
+  RandomQueries random(2026);
+  const auto names_a_part = [](const std::string& contact) {
+    return contact.rfind("its ", 0) == 0 &&
+           (contact.find(" and fixture '") != std::string::npos || contact.find(" and the floor") != std::string::npos ||
+            contact.find(" and the base of robot '") != std::string::npos || contact.find(" and its ") != std::string::npos);
+  };
+  int mismatches = 0;
+  int unnamed = 0;
+  int colliding = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const int r = i % 2;
+    const VectorXd q = random.configuration(*(*loaded.robots)[r].model);
+    const std::string contact = dut.robotContact(r, q);
+    mismatches += contact.empty() != dut.robotFree(r, q, {}) ? 1 : 0;
+    if (contact.empty()) continue;
+    ++colliding;
+    if (!names_a_part(contact)) {
+      ++unnamed;
+      UNSCOPED_INFO("robot " << r << ": " << contact);
+    }
+  }
+  CHECK(mismatches == 0);
+  CHECK(unnamed == 0);
+  CHECK(colliding > 100);
+  int pair_colliding = 0;
+  for (int i = 0; i < 1000; ++i) {
+    const VectorXd q0 = random.towardsCentre((*loaded.robots)[0]);
+    const VectorXd q1 = random.towardsCentre((*loaded.robots)[1]);
+    const std::string contact = dut.robotsContact(0, q0, 1, q1);
+    mismatches += contact.empty() != dut.robotsFree(0, q0, std::nullopt, 1, q1, std::nullopt) ? 1 : 0;
+    if (contact.empty()) continue;
+    ++pair_colliding;
+    unnamed += contact.rfind("its ", 0) == 0 && contact.find(" and robot '" + world.robots[1].name + "''s ") != std::string::npos ? 0 : 1;
+  }
+  CHECK(mismatches == 0);
+  CHECK(unnamed == 0);
+  CHECK(pair_colliding > 100);
+
+  // the arm driven into the table names the table
+  VectorXd q = homeQ(world, 0);
+  q[1] = 0.3;
+  CHECK_THAT(dut.robotContact(0, q), Catch::Matchers::EndsWith(" and fixture 'table'"));
+  CHECK(dut.robotContact(0, homeQ(world, 0)).empty());
+}
+
 TEST_CASE("robotsClearance: the robots stay free while they travel less than it", "[planner][collision]") {
   const auto& loaded = sortingWorld();
   const core::World& world = *loaded.world;

@@ -91,15 +91,16 @@ TEST_CASE("a robot colliding at home is a world error naming the file, line and 
   std::string field;
   std::string what;
   SECTION("with the table") {
-    world.robots[1].home[1] = 0.6;  // shoulder lifted below the horizontal: the upper arm in the table top
+    world.robots[1].home[1] = 0.6;  // shoulder lifted below the horizontal: the gripper down in the table top
     field = "robots[1].home: robot '" + world.robots[1].name + "'";
-    what = "collides with a fixture, the floor";
+    what = "collides at its home configuration (gripper open): its hande_right_finger and fixture 'table'";
   }
   SECTION("with another robot") {
     // facing r0 0.7 m away (its pedestal clear of r0's): the forearms, reaching forward at home, cross
     world.robots[1].X_WBase.translation() = world.robots[0].X_WBase.translation() + Eigen::Vector3d(0.7, 0.0, 0.0);
     field = "robots[1].home: robot '" + world.robots[1].name + "'";
-    what = "collides with robot '" + world.robots[0].name + "'";
+    what = "collides with robot '" + world.robots[0].name + "' when both stand at their home configurations: its " +
+           "forearm_link and robot '" + world.robots[0].name + "''s forearm_link";
   }
   const core::LoadedWorld loaded = unchecked(std::move(world));
   const auto location = "default.yaml:" + std::to_string(loaded.world->robots[1].where.line) + ":";
