@@ -1296,12 +1296,13 @@ std::string CollisionChecker::robotContact(int robot, const Eigen::VectorXd& q) 
 
 std::string CollisionChecker::robotsContact(int robot_a, const Eigen::VectorXd& q_a, int robot_b,
                                             const Eigen::VectorXd& q_b) {
-  if (robotsFree(robot_a, q_a, std::nullopt, robot_b, q_b, std::nullopt)) return "";
+  placePair(robot_a, q_a, std::nullopt, robot_b, q_b, std::nullopt);
+  const std::optional<detail::Hit> hit = state_->interRobotHit(state_->slots[robot_a], state_->slots[robot_b]);
+  if (!hit) return "";
   const detail::SceneData& scene = *scene_->data_;
-  const detail::Hit hit = *state_->interRobotHit(state_->slots[robot_a], state_->slots[robot_b]);
-  return "its " + scene.robots[robot_a].bodies[hit.body].name + " and robot '" +
+  return "its " + scene.robots[robot_a].bodies[hit->body].name + " and robot '" +
          (*scene.robot_set)[static_cast<std::size_t>(robot_b)].spec->name + "''s " +
-         scene.robots[robot_b].bodies[hit.other].name;
+         scene.robots[robot_b].bodies[hit->other].name;
 }
 
 std::pair<Eigen::Vector3d, Eigen::Vector3d> CollisionChecker::robotBounds(int robot, const Eigen::VectorXd& q,
@@ -1319,17 +1320,22 @@ std::pair<Eigen::Vector3d, Eigen::Vector3d> CollisionChecker::robotBounds(int ro
 bool CollisionChecker::robotsFree(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,
                                   int robot_b, const Eigen::VectorXd& q_b,
                                   const std::optional<HeldObject>& held_b) {
+  placePair(robot_a, q_a, held_a, robot_b, q_b, held_b);
+  return !state_->interRobotHit(state_->slots[robot_a], state_->slots[robot_b]);
+}
+
+void CollisionChecker::placePair(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a,
+                                 int robot_b, const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b) {
   const detail::SceneData& scene = *scene_->data_;
   const RobotData& a = requireRobot(scene, robot_a);
   const RobotData& b = requireRobot(scene, robot_b);
-  if (robot_a == robot_b) throw std::invalid_argument("collision check: robotsFree needs two different robots");
+  if (robot_a == robot_b) throw std::invalid_argument("collision check: robot against robot needs two different robots");
   requireConfiguration(a, q_a, "q_a");
   requireConfiguration(b, q_b, "q_b");
   requireHeld(scene, held_a);
   requireHeld(scene, held_b);
   state_->forward(state_->slots[robot_a], a, q_a, held_a);
   state_->forward(state_->slots[robot_b], b, q_b, held_b);
-  return !state_->interRobotHit(state_->slots[robot_a], state_->slots[robot_b]);
 }
 
 namespace {

@@ -281,6 +281,9 @@ class CollisionChecker {
   void resetCounters() { counters_ = {}; }
 
  private:
+  /// Checks the arguments of a robot-against-robot query and poses both robots for it.
+  void placePair(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a, int robot_b,
+                 const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b);
   std::optional<std::vector<char>> motionHits(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                               std::span<const RestingObject> objects,
                                               const std::optional<HeldObject>& held, bool check_robot);

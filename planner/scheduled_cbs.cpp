@@ -154,11 +154,11 @@ class ScheduleView {
     return state;
   }
 
-  /// Over [t0, t1], which no point time of `robot` lies strictly within: its peak speed over its
-  /// mean speed (restToRestPeakOverMean on a move's piece; 1 along a transition's keys, which
-  /// are interpolated at constant speed, or standing).
-  double peakOverMeanSpeed(int robot, double t0, double t1) const {
-    const int item = at(robot, t0, true).item;
+  /// Over [t0, t1], which no point time of `robot` lies strictly within and during which it is
+  /// on `item` (RobotState::item at t0): its peak speed over its mean speed
+  /// (restToRestPeakOverMean on a move's piece; 1 along a transition's keys, which are
+  /// interpolated at constant speed, or standing).
+  double peakOverMeanSpeed(int robot, int item, double t0, double t1) const {
     if (item < 0) return 1.0;
     const ScheduleSegment& seg = schedule_->segments[timelines_[robot].segments[item]];
     const std::vector<Millis>& times = timelines_[robot].times[item];
@@ -534,8 +534,8 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         }
         // evenly in time, so that no point moves more than motion_step between samples where
         // the robot moves fastest within the interval
-        const int steps = static_cast<int>(std::ceil(std::max(view.peakOverMeanSpeed(a, t0, t1) * steps_a,
-                                                              view.peakOverMeanSpeed(b, t0, t1) * steps_b) -
+        const int steps = static_cast<int>(std::ceil(std::max(view.peakOverMeanSpeed(a, a0.item, t0, t1) * steps_a,
+                                                              view.peakOverMeanSpeed(b, b0.item, t0, t1) * steps_b) -
                                                      1e-9));
         // the interval's own fingers and held objects, also at its end
         const auto state_at = [&](int r, int k, const RobotState& s0, const RobotState& s1) {

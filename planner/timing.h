@@ -54,10 +54,11 @@ TimedSample restToRestSample(const core::ArmConfig& a, const core::ArmConfig& b,
 std::pair<core::ArmConfig, core::ArmConfig> restToRestAt(const core::ArmConfig& a, const core::ArmConfig& b,
                                                          Millis duration, double t, const TimingLimits& limits);
 
-/// Over [t0, t1] (seconds, clamped to [0, duration]) of the rest-to-rest move a -> b stretched
-/// to `duration`: its peak speed over its mean speed, from 1 (cruising) to 2 (accelerating from
-/// rest throughout); 1 where the arm does not move. Samples evenly spaced in time over [t0, t1]
-/// lie at most this many times the mean spacing apart along the line.
+/// Over [t0, t1] (seconds, within [0, duration]; the clamp to it only absorbs rounding) of the
+/// rest-to-rest move a -> b stretched to `duration`: its peak speed over its mean speed, from 1
+/// (cruising) to 2 (accelerating from rest throughout); 1 where the arm does not move. Samples
+/// evenly spaced in time over [t0, t1] lie at most this many times the mean spacing apart along
+/// the line.
 double restToRestPeakOverMean(const core::ArmConfig& a, const core::ArmConfig& b, Millis duration, double t0,
                               double t1, const TimingLimits& limits);
 
