@@ -1,5 +1,6 @@
 // `dashbed gen`: write a seeded scenario world (sorting or shelving) as YAML.
 
+#include <algorithm>
 #include <fstream>
 #include <iostream>
 #include <memory>
@@ -87,10 +88,12 @@ void addGenCommand(CLI::App& app) {
   sort->add_option("--cubes", sort_options->params.cubes, "Number of cubes (>= 1)")
       ->check(CLI::PositiveNumber)
       ->capture_default_str();
-  sort->add_option("--classes", sort_options->params.classes,
-                   "Number of colour classes, 1..4 (exactly 4 with 4 robots in the paper layout; in a ring at most one per robot)")
-      ->check(CLI::Range(1, 4))
-      ->capture_default_str();
+  CLI::Option* classes =
+      sort->add_option("--classes", sort_options->params.classes,
+                       "Number of colour classes, 1..4 (exactly 4 with 4 robots in the paper layout; in a ring at "
+                       "most one per robot, and by default one per robot up to 4)")
+          ->check(CLI::Range(1, 4))
+          ->capture_default_str();
   sort->add_option("--start", sort_options->start, "Start layout: cross or random")
       ->check(CLI::IsMember({"cross", "random"}))
       ->capture_default_str();
@@ -98,9 +101,12 @@ void addGenCommand(CLI::App& app) {
       ->check(kNotNegative)
       ->capture_default_str();
   sort->add_option("-o,--output", sort_options->output, "Output file (default: stdout)");
-  sort->callback([sort_options] {
+  sort->callback([sort_options, classes] {
     sort_options->params.start = parseStartLayout(sort_options->start);
     sort_options->params.layout = parseRobotLayout(sort_options->layout);
+    if (sort_options->params.layout == RobotLayout::kRing && classes->count() == 0) {
+      sort_options->params.classes = std::min(sort_options->params.classes, sort_options->params.robots);
+    }
     const core::World world =
         generateOrFail([&] { return generateSorting(sort_options->params); });
     emitWorld(world, sort_options->output);
