@@ -181,10 +181,25 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // moves planned for parkings count as construction, like the search's
     const Clock::time_point t0 = Clock::now();
     const double built = graph->constructionSeconds();
-    const ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
-    stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
+    ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
     stats.conflict_nodes += resolved.nodes;
-    const std::string nodes = " (" + std::to_string(resolved.nodes) + " nodes)";
+    std::string nodes = " (" + std::to_string(resolved.nodes) + " nodes)";
+    // a sequential plan's steps may overlap where they keep clear of each other
+    if (resolved.status == ConflictStatus::kResolved && history.sequential) {
+      ConflictResult overlapping = resolveConflicts(*graph, history, conflict_budget, SequentialSteps::kOverlapping);
+      stats.conflict_nodes += overlapping.nodes;
+      say("steps one after another: makespan " + secondsText(resolved.schedule->makespan) + nodes +
+          "; overlapping: " +
+          (overlapping.status == ConflictStatus::kResolved ? "makespan " + secondsText(overlapping.schedule->makespan)
+                                                            : "failed") +
+          " (" + std::to_string(overlapping.nodes) + " nodes)");
+      if (overlapping.status == ConflictStatus::kResolved &&
+          overlapping.schedule->makespan < resolved.schedule->makespan) {
+        nodes = " (" + std::to_string(overlapping.nodes) + " nodes)";
+        resolved = std::move(overlapping);
+      }
+    }
+    stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
       if (feedbacks < settings.scheduling_constraints_per_round) {
@@ -217,7 +232,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       best_history = history;
       best_schedule = resolved.schedule;
       stats.conflict_constraints = resolved.constraints;
-      stats.optimistic_makespan = toSeconds(history.makespan());
+      stats.optimistic_makespan = toSeconds(resolved.unresolved_makespan);
     }
     return false;
   };

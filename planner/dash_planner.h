@@ -83,7 +83,9 @@ struct PlannerStats {
   int conflict_nodes = 0;        ///< conflict-resolution nodes, all task plans
   int scheduling_constraints = 0;  ///< fed back from conflict resolution to the task search, all rounds
   int conflict_constraints = 0;    ///< precedences, detours and parkings of the plan's conflict resolution
-  double optimistic_makespan = 0.0;  ///< of the task plan returned [s]
+  /// of the task plan returned, timed without robot-robot conflicts (ConflictResult::
+  /// unresolved_makespan) [s]
+  double optimistic_makespan = 0.0;
   double makespan = 0.0;             ///< of the plan [s]
 };
 

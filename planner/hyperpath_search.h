@@ -79,7 +79,8 @@ enum class QueryMode {
   kParkAtHome,  ///< a robot without an object goes home between transitions, to wait out of the way
   /// the steps run one after another (TransitionHistory::sequential): only the robots of one
   /// step move at any time, the others wait at home (holding their object, if any); a second
-  /// object is picked up only when no other choice is left
+  /// object is picked up only when no other choice is left (conflict resolution may then let
+  /// the steps of different robots overlap, see SequentialSteps)
   kSequential,
   /// kSequential with the waiting robots folded back (IdlePose::kFolded), out of the way of
   /// the others where their homes reach into the shared workspace: every robot folds at the

@@ -302,7 +302,7 @@ std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const Tra
 
 /// The temporal network of a history's segments (see the header).
 std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const TransitionHistory& history,
-                                  const std::vector<ScheduleSegment>& segments) {
+                                  const std::vector<ScheduleSegment>& segments, SequentialSteps steps) {
   std::vector<Edge> edges;
   const int n = static_cast<int>(segments.size());
   // each object's pick and place segment (the transition parts)
@@ -342,7 +342,8 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
       }
     }
   }
-  if (history.sequential) {  // each phase after the one before: folding, the steps, unfolding
+  if (history.sequential && steps == SequentialSteps::kOneAfterAnother) {
+    // each phase after the one before: folding, the steps, unfolding
     std::vector<std::vector<int>> phases(history.steps.size() + 2);
     for (int s = 0; s < n; ++s) phases.at(static_cast<std::size_t>(segments[s].phase + 1)).push_back(s);
     std::erase_if(phases, [](const std::vector<int>& phase) { return phase.empty(); });
@@ -632,7 +633,7 @@ std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int r
 }
 
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
-                                const ConflictResolutionBudget& budget) {
+                                const ConflictResolutionBudget& budget, SequentialSteps steps) {
   ConflictResult result;
   const std::vector<ScheduleSegment> base = segmentsOf(graph, history);
   CollisionChecker checker(graph.scene());
@@ -657,7 +658,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   // a node: its segments at the earliest times their temporal network allows
   const auto make = [&](std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
                         std::vector<DetourConstraint> detours, int parkings) -> std::optional<Node> {
-    std::vector<Edge> edges = baseConstraints(graph, history, segments);
+    std::vector<Edge> edges = baseConstraints(graph, history, segments, steps);
     for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
     std::optional<std::vector<Millis>> start = earliestStarts(segments.size(), edges);
     if (!start) return std::nullopt;
@@ -724,6 +725,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   };
 
   if (std::optional<Node> root = make(base, {}, {}, 0)) {
+    result.unresolved_makespan = root->schedule.makespan;
     open.push(std::move(*root));
   } else {
     result.reason = "the schedule's own precedences contradict each other";

@@ -13,11 +13,11 @@
 //  - scheduling constraints from the object sites: a motion through an object's start site
 //    starts after that object's pick is over; a motion through its goal site ends before its
 //    place begins;
-//  - a sequential history (TransitionHistory::sequential): every segment of a step's phase
-//    (ScheduleSegment::phase) starts after every segment of the phase before has ended, so
-//    the robots of one step move while the others stand at home or folded (or hold the object
-//    the step passes on); with idle robots folded, the robots fold before the first step and
-//    unfold after the last;
+//  - a sequential history (TransitionHistory::sequential) with its steps one after another
+//    (SequentialSteps): every segment of a step's phase (ScheduleSegment::phase) starts after
+//    every segment of the phase before has ended, so the robots of one step move while the
+//    others stand at home or folded (or hold the object the step passes on); with idle robots
+//    folded, the robots fold before the first step and unfold after the last;
 //  - the constraints added by the high level.
 // The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
 // constraints cannot all hold).
@@ -91,6 +91,9 @@ enum class ConflictStatus { kResolved, kUnresolvable, kBudget };
 struct ConflictResult {
   ConflictStatus status = ConflictStatus::kUnresolvable;
   std::optional<Schedule> schedule;
+  /// The makespan with no robot-robot conflict resolved yet (the high level's root; 0 when the
+  /// schedule's own precedences contradict each other).
+  Millis unresolved_makespan = 0;
   int nodes = 0;            ///< high-level nodes expanded
   int constraints = 0;      ///< precedences, detours and parkings in the solution
   int reroutes = 0;         ///< detours and parkings tried
@@ -107,9 +110,19 @@ struct ConflictResult {
   std::vector<std::pair<int, int>> home_blocked;
 };
 
+/// How the steps of a sequential history are timed (a direct history ignores it).
+enum class SequentialSteps {
+  kOneAfterAnother,  ///< each step's phase after the one before, as described above
+  /// without the phases' order: each robot still waits at home (or folded) between its steps,
+  /// but the steps of different robots run at once wherever the high level finds them clear of
+  /// each other (or orders them where not)
+  kOverlapping,
+};
+
 /// Resolves the robot-robot conflicts of a complete history (with its final moves).
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
-                                const ConflictResolutionBudget& budget);
+                                const ConflictResolutionBudget& budget,
+                                SequentialSteps steps = SequentialSteps::kOneAfterAnother);
 
 /// A robot's full configuration (arm, fingers) and held object at time t of a schedule.
 struct RobotSnapshot {

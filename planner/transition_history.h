@@ -46,7 +46,8 @@ struct TransitionHistory {
   std::vector<Millis> site_busy;  ///< [site] the last scheduled motion through the site ends
   std::vector<ScheduledTransition> steps;
   /// The steps run one after another, never two at a time (QueryMode::kSequential): a step's
-  /// moves start once the step before has ended, and conflict resolution keeps that order.
+  /// moves start once the step before has ended, and conflict resolution keeps that order
+  /// unless asked to let them overlap (SequentialSteps::kOverlapping).
   bool sequential = false;
   /// In a sequential history: where the robots of other steps wait.
   IdlePose idle = IdlePose::kHome;

@@ -125,6 +125,42 @@ TEST_CASE("conflict resolution keeps the steps of a sequential task plan one aft
   CHECK(overlapping.schedule->makespan < schedule.makespan);
 }
 
+TEST_CASE("conflict resolution may overlap the steps of a sequential task plan, robots waiting at home between theirs",
+          "[planner][dash]") {
+  Graph g(worldPath("default.yaml"));
+  const auto [history, one_after_another] = resolvedSequential(g);
+  const ConflictResult overlapping =
+      resolveConflicts(g.graph, history, conflictBudget(), SequentialSteps::kOverlapping);
+  REQUIRE(overlapping.status == ConflictStatus::kResolved);
+  const Schedule& schedule = *overlapping.schedule;
+  CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
+  CHECK(schedule.makespan < one_after_another.makespan);
+  CHECK(overlapping.unresolved_makespan <= schedule.makespan);
+  // the same transitions per robot, in the same order
+  const auto parts = [](const Schedule& s, int robot) {
+    std::vector<const TransitionMotion*> motions;
+    for (const ScheduleSegment& seg : s.segments) {
+      if (seg.robot == robot && seg.motion != nullptr) motions.push_back(seg.motion);
+    }
+    return motions;
+  };
+  for (int robot = 0; robot < static_cast<int>(g.world.world->robots.size()); ++robot) {
+    CHECK(parts(schedule, robot) == parts(one_after_another, robot));
+  }
+  // two robots of different steps are busy at once somewhere
+  bool overlap = false;
+  for (std::size_t a = 0; a < schedule.segments.size(); ++a) {
+    for (std::size_t b = 0; b < schedule.segments.size(); ++b) {
+      const ScheduleSegment& x = schedule.segments[a];
+      const ScheduleSegment& y = schedule.segments[b];
+      if (x.robot == y.robot || x.phase == y.phase) continue;
+      overlap = overlap ||
+                (schedule.start[a] < schedule.start[b] + y.duration && schedule.start[b] < schedule.start[a] + x.duration);
+    }
+  }
+  CHECK(overlap);
+}
+
 TEST_CASE("a plan kept as a fallback is written out the same after the representation grows", "[planner][dash]") {
   // the planner keeps a sequential plan while later rounds look for a direct one: its moves
   // must outlive the rounds that plan every move again
