@@ -184,19 +184,26 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
     stats.conflict_nodes += resolved.nodes;
     std::string nodes = " (" + std::to_string(resolved.nodes) + " nodes)";
-    // a sequential plan's steps may overlap where they keep clear of each other
+    // a sequential plan's steps may overlap where they keep clear of each other: any schedule
+    // shorter than theirs one after another will do; where the shortest first finds none, the
+    // one free of conflicts for longest first
     if (resolved.status == ConflictStatus::kResolved && history.sequential) {
-      ConflictResult overlapping = resolveConflicts(*graph, history, conflict_budget, SequentialSteps::kOverlapping);
-      stats.conflict_nodes += overlapping.nodes;
-      say("steps one after another: makespan " + secondsText(resolved.schedule->makespan) + nodes +
-          "; overlapping: " +
-          (overlapping.status == ConflictStatus::kResolved ? "makespan " + secondsText(overlapping.schedule->makespan)
-                                                            : "failed") +
-          " (" + std::to_string(overlapping.nodes) + " nodes)");
-      if (overlapping.status == ConflictStatus::kResolved &&
-          overlapping.schedule->makespan < resolved.schedule->makespan) {
-        nodes = " (" + std::to_string(overlapping.nodes) + " nodes)";
-        resolved = std::move(overlapping);
+      ConflictResolutionBudget shorter = conflict_budget;
+      shorter.makespan_below = resolved.schedule->makespan;
+      for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime}) {
+        shorter.order = order;
+        ConflictResult overlapping = resolveConflicts(*graph, history, shorter, SequentialSteps::kOverlapping);
+        stats.conflict_nodes += overlapping.nodes;
+        say("steps one after another: makespan " + secondsText(resolved.schedule->makespan) + nodes +
+            "; overlapping" + (order == NodeOrder::kAlongTime ? ", along time" : "") + ": " +
+            (overlapping.status == ConflictStatus::kResolved ? "makespan " + secondsText(overlapping.schedule->makespan)
+                                                              : "none shorter") +
+            " (" + std::to_string(overlapping.nodes) + " nodes)");
+        if (overlapping.status == ConflictStatus::kResolved) {
+          nodes = " (" + std::to_string(overlapping.nodes) + " nodes)";
+          resolved = std::move(overlapping);
+          break;
+        }
       }
     }
     stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);

@@ -649,9 +649,11 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     std::optional<PairKnowledge> known;  ///< per robot pair, intervals known free
     std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
   };
-  const auto worse = [](const Node& x, const Node& y) {
-    return std::make_tuple(x.schedule.makespan, x.constraints(), x.order) >
-           std::make_tuple(y.schedule.makespan, y.constraints(), y.order);
+  const bool along_time = budget.order == NodeOrder::kAlongTime;
+  const auto worse = [along_time](const Node& x, const Node& y) {
+    const double x_clear = along_time ? -x.clear_until : 0.0, y_clear = along_time ? -y.clear_until : 0.0;
+    return std::make_tuple(x_clear, x.schedule.makespan, x.constraints(), x.order) >
+           std::make_tuple(y_clear, y.schedule.makespan, y.constraints(), y.order);
   };
   std::priority_queue<Node, std::vector<Node>, decltype(worse)> open(worse);
   std::uint64_t created = 0;
@@ -726,6 +728,10 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
 
   if (std::optional<Node> root = make(base, {}, {}, 0)) {
     result.unresolved_makespan = root->schedule.makespan;
+    if (budget.makespan_below && root->schedule.makespan >= *budget.makespan_below) {
+      result.reason = "no schedule is shorter than " + std::to_string(*budget.makespan_below) + " ms";
+      return result;
+    }
     open.push(std::move(*root));
   } else {
     result.reason = "the schedule's own precedences contradict each other";
@@ -761,6 +767,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         for (int b = a + 1; b < robots; ++b) known.same[a * robots + b] = std::min(differ[a], differ[b]);
       }
       child.known = std::move(known);
+      if (budget.makespan_below && child.schedule.makespan >= *budget.makespan_below) return;
       open.push(std::move(child));
     };
     // time: A before B, B before A

@@ -80,8 +80,20 @@ struct Schedule {
   Millis makespan = 0;
 };
 
+/// The order in which the high level expands its nodes.
+enum class NodeOrder {
+  kMakespan,   ///< best first: the shortest schedule first
+  /// depth first along time: the node free of conflicts for longest first (ties: the shortest);
+  /// finds a schedule in fewer nodes where any below a bound will do (crowded sequential plans
+  /// overlapping), not the shortest
+  kAlongTime,
+};
+
 struct ConflictResolutionBudget {
   int max_nodes = 2000;       ///< high-level nodes expanded
+  NodeOrder order = NodeOrder::kMakespan;
+  /// Nodes whose makespan reaches this are dropped (none: every node is kept).
+  std::optional<Millis> makespan_below;
   int max_reroutes = 24;     ///< detours and parkings tried (each a roadmap search)
   std::function<bool()> stop;  ///< true when time is up (may be empty)
 };

@@ -129,8 +129,11 @@ TEST_CASE("conflict resolution may overlap the steps of a sequential task plan, 
           "[planner][dash]") {
   Graph g(worldPath("default.yaml"));
   const auto [history, one_after_another] = resolvedSequential(g);
-  const ConflictResult overlapping =
-      resolveConflicts(g.graph, history, conflictBudget(), SequentialSteps::kOverlapping);
+  ConflictResolutionBudget budget = conflictBudget();
+  budget.makespan_below = one_after_another.makespan;
+  budget.order = GENERATE(NodeOrder::kMakespan, NodeOrder::kAlongTime);
+  INFO("node order " << static_cast<int>(budget.order));
+  const ConflictResult overlapping = resolveConflicts(g.graph, history, budget, SequentialSteps::kOverlapping);
   REQUIRE(overlapping.status == ConflictStatus::kResolved);
   const Schedule& schedule = *overlapping.schedule;
   CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
@@ -159,6 +162,11 @@ TEST_CASE("conflict resolution may overlap the steps of a sequential task plan, 
     }
   }
   CHECK(overlap);
+  // best first, the schedule found is the shortest: none is shorter
+  if (budget.order == NodeOrder::kMakespan) {
+    budget.makespan_below = schedule.makespan;
+    CHECK(resolveConflicts(g.graph, history, budget, SequentialSteps::kOverlapping).status != ConflictStatus::kResolved);
+  }
 }
 
 TEST_CASE("a plan kept as a fallback is written out the same after the representation grows", "[planner][dash]") {
