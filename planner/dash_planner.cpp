@@ -25,6 +25,9 @@ std::string secondsText(Millis t) {
   return out.str();
 }
 
+/// " (12 nodes)": a conflict resolution's size, as the progress lines give it.
+std::string nodesText(int nodes) { return " (" + std::to_string(nodes) + " nodes)"; }
+
 /// "place green_1 by r1 (transition 63)"
 /// "pick cube_0 by r1", "handoff cube_0 by r0 to r1": a task-space hyperarc in words.
 std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph& task_space, int hyperarc) {
@@ -39,6 +42,31 @@ std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph
 std::string describeTransition(const MotionHypergraph& graph, int id) {
   return describeHyperarc(*graph.world().world, graph.taskSpace(), graph.transition(id).sample.hyperarc) +
          " (transition " + std::to_string(id) + ")";
+}
+
+/// A sequential plan's steps may overlap where they keep clear of each other: conflict
+/// resolution runs again without the steps' order and any schedule shorter than theirs one
+/// after another will do. Where the shortest first finds none, the node free of conflicts for
+/// longest first gets a second try. Returns the overlapping schedule, or nothing when neither
+/// finds one shorter; adds the nodes expanded to `nodes` and says one line per try.
+std::optional<ConflictResult> overlapSequentialSteps(MotionHypergraph& graph, const TransitionHistory& history,
+                                                     ConflictResolutionBudget budget,
+                                                     const ConflictResult& one_after_another, int& nodes,
+                                                     const std::function<void(const std::string&)>& say) {
+  budget.makespan_below = one_after_another.schedule->makespan;
+  for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime}) {
+    budget.order = order;
+    ConflictResult overlapping = resolveConflicts(graph, history, budget, SequentialSteps::kOverlapping);
+    nodes += overlapping.nodes;
+    say("steps one after another: makespan " + secondsText(one_after_another.schedule->makespan) +
+        nodesText(one_after_another.nodes) + "; overlapping" + (order == NodeOrder::kAlongTime ? ", along time" : "") +
+        ": " +
+        (overlapping.status == ConflictStatus::kResolved ? "makespan " + secondsText(overlapping.schedule->makespan)
+                                                          : "none shorter") +
+        nodesText(overlapping.nodes));
+    if (overlapping.status == ConflictStatus::kResolved) return overlapping;
+  }
+  return std::nullopt;
 }
 
 /// Why an object can never reach its goal in the task-space hypergraph, or "".
@@ -183,28 +211,10 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     const double built = graph->constructionSeconds();
     ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
     stats.conflict_nodes += resolved.nodes;
-    std::string nodes = " (" + std::to_string(resolved.nodes) + " nodes)";
-    // a sequential plan's steps may overlap where they keep clear of each other: any schedule
-    // shorter than theirs one after another will do; where the shortest first finds none, the
-    // one free of conflicts for longest first
     if (resolved.status == ConflictStatus::kResolved && history.sequential) {
-      ConflictResolutionBudget shorter = conflict_budget;
-      shorter.makespan_below = resolved.schedule->makespan;
-      for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime}) {
-        shorter.order = order;
-        ConflictResult overlapping = resolveConflicts(*graph, history, shorter, SequentialSteps::kOverlapping);
-        stats.conflict_nodes += overlapping.nodes;
-        say("steps one after another: makespan " + secondsText(resolved.schedule->makespan) + nodes +
-            "; overlapping" + (order == NodeOrder::kAlongTime ? ", along time" : "") + ": " +
-            (overlapping.status == ConflictStatus::kResolved ? "makespan " + secondsText(overlapping.schedule->makespan)
-                                                              : "none shorter") +
-            " (" + std::to_string(overlapping.nodes) + " nodes)");
-        if (overlapping.status == ConflictStatus::kResolved) {
-          nodes = " (" + std::to_string(overlapping.nodes) + " nodes)";
-          resolved = std::move(overlapping);
-          break;
-        }
-      }
+      std::optional<ConflictResult> overlapping =
+          overlapSequentialSteps(*graph, history, conflict_budget, resolved, stats.conflict_nodes, say);
+      if (overlapping) resolved = std::move(*overlapping);
     }
     stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
     if (resolved.status != ConflictStatus::kResolved) {
@@ -214,7 +224,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           if (graph->addSchedulingConstraint(a, b)) {
             ++feedbacks;
             ++stats.scheduling_constraints;
-            say(last_failure + nodes + "; scheduling constraint from a conflict no order resolved: " +
+            say(last_failure + nodesText(resolved.nodes) + "; scheduling constraint from a conflict no order resolved: " +
                 describeTransition(*graph, a) + " / " + describeTransition(*graph, b));
             return true;
           }
@@ -223,17 +233,17 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           if (graph->addHomeConstraint(transition, robot)) {
             ++feedbacks;
             ++stats.scheduling_constraints;
-            say(last_failure + nodes + "; scheduling constraint from a conflict no order resolved: " +
+            say(last_failure + nodesText(resolved.nodes) + "; scheduling constraint from a conflict no order resolved: " +
                 describeTransition(*graph, transition) + " / " +
                 graph->world().world->robots[static_cast<std::size_t>(robot)].name + " at home");
             return true;
           }
         }
       }
-      say(last_failure + nodes);
+      say(last_failure + nodesText(resolved.nodes));
       return false;
     }
-    say("conflict resolution: makespan " + secondsText(resolved.schedule->makespan) + nodes);
+    say("conflict resolution: makespan " + secondsText(resolved.schedule->makespan) + nodesText(resolved.nodes));
     if (resolved.schedule->makespan < best) {
       best = resolved.schedule->makespan;
       best_history = history;
