@@ -28,7 +28,6 @@ std::string secondsText(Millis t) {
 /// " (12 nodes)": a conflict resolution's size, as the progress lines give it.
 std::string nodesText(int nodes) { return " (" + std::to_string(nodes) + " nodes)"; }
 
-/// "place green_1 by r1 (transition 63)"
 /// "pick cube_0 by r1", "handoff cube_0 by r0 to r1": a task-space hyperarc in words.
 std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph& task_space, int hyperarc) {
   const TransitionHyperarc& arc = task_space.hyperarcs().at(static_cast<std::size_t>(hyperarc));
@@ -39,6 +38,7 @@ std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph
   return text;
 }
 
+/// "place green_1 by r1 (transition 63)"
 std::string describeTransition(const MotionHypergraph& graph, int id) {
   return describeHyperarc(*graph.world().world, graph.taskSpace(), graph.transition(id).sample.hyperarc) +
          " (transition " + std::to_string(id) + ")";
@@ -62,7 +62,8 @@ std::optional<ConflictResult> overlapSequentialSteps(MotionHypergraph& graph, co
         nodesText(one_after_another.nodes) + "; overlapping" + (order == NodeOrder::kAlongTime ? ", along time" : "") +
         ": " +
         (overlapping.status == ConflictStatus::kResolved ? "makespan " + secondsText(overlapping.schedule->makespan)
-                                                          : "none shorter") +
+         : overlapping.status == ConflictStatus::kBudget ? std::string("none shorter within the budget")
+                                                         : std::string("none shorter")) +
         nodesText(overlapping.nodes));
     if (overlapping.status == ConflictStatus::kResolved) return overlapping;
   }
@@ -100,7 +101,7 @@ nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStat
           {"conflict_nodes", stats.conflict_nodes},
           {"scheduling_constraints", stats.scheduling_constraints},
           {"conflict_constraints", stats.conflict_constraints},
-          {"optimistic_makespan", stats.optimistic_makespan},
+          {"unresolved_makespan", stats.unresolved_makespan},
           {"makespan", stats.makespan}};
 }
 
@@ -220,22 +221,24 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
       if (feedbacks < settings.scheduling_constraints_per_round) {
+        const auto fed_back = [&](bool added, const std::string& between) {
+          if (!added) return false;
+          ++feedbacks;
+          ++stats.scheduling_constraints;
+          say(last_failure + nodesText(resolved.nodes) + "; scheduling constraint from a conflict no order resolved: " +
+              between);
+          return true;
+        };
         for (const auto& [a, b] : resolved.unordered) {
-          if (graph->addSchedulingConstraint(a, b)) {
-            ++feedbacks;
-            ++stats.scheduling_constraints;
-            say(last_failure + nodesText(resolved.nodes) + "; scheduling constraint from a conflict no order resolved: " +
-                describeTransition(*graph, a) + " / " + describeTransition(*graph, b));
+          if (fed_back(graph->addSchedulingConstraint(a, b),
+                       describeTransition(*graph, a) + " / " + describeTransition(*graph, b))) {
             return true;
           }
         }
         for (const auto& [transition, robot] : resolved.home_blocked) {
-          if (graph->addHomeConstraint(transition, robot)) {
-            ++feedbacks;
-            ++stats.scheduling_constraints;
-            say(last_failure + nodesText(resolved.nodes) + "; scheduling constraint from a conflict no order resolved: " +
-                describeTransition(*graph, transition) + " / " +
-                graph->world().world->robots[static_cast<std::size_t>(robot)].name + " at home");
+          if (fed_back(graph->addHomeConstraint(transition, robot),
+                       describeTransition(*graph, transition) + " / " +
+                           graph->world().world->robots[static_cast<std::size_t>(robot)].name + " at home")) {
             return true;
           }
         }
@@ -249,7 +252,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       best_history = history;
       best_schedule = resolved.schedule;
       stats.conflict_constraints = resolved.constraints;
-      stats.optimistic_makespan = toSeconds(resolved.unresolved_makespan);
+      stats.unresolved_makespan = toSeconds(resolved.unresolved_makespan);
     }
     return false;
   };

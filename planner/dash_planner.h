@@ -9,7 +9,9 @@
 // in one history may be in another, so when they leave no task plan they are dropped.
 //
 //  Method::kGreedy   Greedy-MM-DaSH: one greedy hyperpath query per round; the first plan whose
-//                    conflicts resolve is returned (earlyTermination from the start).
+//                    conflicts resolve is returned (earlyTermination from the start), unless
+//                    it is sequential: then the direct queries go on for
+//                    sequential_fallback_rounds more rounds.
 //  Method::kOptimal  MM-DaSH: Greedy's rounds until they have a plan, then Next-Best Search
 //                    (Alg. 5) with the A*-like hyperpath query on that round's representation,
 //                    starting from the greedy plan as the upper bound (so it is never worse),
@@ -51,7 +53,9 @@ struct PlannerSettings {
   /// without them; but a round that drops them meets the same conflicts again, so each round
   /// lets the constrained search look further
   std::uint64_t constrained_search_expansions = 1000;
-  int conflict_nodes = 500;                   ///< per conflict resolution
+  /// per conflict resolution (a sequential plan gets up to three: its steps one after
+  /// another, then overlapping best first and depth first along time)
+  int conflict_nodes = 500;
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search
   /// Scheduling constraints fed back from failed conflict resolutions per round, each followed
   /// by a new query on the same representation.
@@ -83,9 +87,10 @@ struct PlannerStats {
   int conflict_nodes = 0;        ///< conflict-resolution nodes, all task plans
   int scheduling_constraints = 0;  ///< fed back from conflict resolution to the task search, all rounds
   int conflict_constraints = 0;    ///< precedences, detours and parkings of the plan's conflict resolution
-  /// of the task plan returned, timed without robot-robot conflicts (ConflictResult::
-  /// unresolved_makespan) [s]
-  double optimistic_makespan = 0.0;
+  /// of the task plan returned, timed before any robot-robot conflict is resolved
+  /// (ConflictResult::unresolved_makespan; the task plan's optimistic makespan for a direct
+  /// plan, below it where a sequential plan's steps overlap) [s]
+  double unresolved_makespan = 0.0;
   double makespan = 0.0;             ///< of the plan [s]
 };
 

@@ -24,7 +24,6 @@ constexpr double kClearanceSlack = 1e-4;  // [m] a robot check skipped by cleara
 struct Edge {
   int from = -1, to = -1;
   Millis lag = 0;
-  bool operator==(const Edge&) const = default;
 };
 
 /// `ms` rounded to the whole millisecond it misses by a rounding error only.
@@ -418,10 +417,6 @@ std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
   return out.str();
 }
 
-}  // namespace
-
-namespace {
-
 /// What a conflict search node knows about its schedule per robot pair (see firstConflictPairs).
 struct PairKnowledge {
   std::vector<double> checked;  ///< [s] every interval ending by then is free in the schedule checked
@@ -590,16 +585,13 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
   return first;
 }
 
-}  // namespace
-
-std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
-  return firstConflictPairs(graph, schedule, from, nullptr, nullptr);
-}
-
-RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {
-  const ScheduleView view(graph, schedule);
-  const RobotState state = view.at(robot, t, true);
-  return {view.full(robot, state), state.held};
+/// The indices of `robot`'s segments in `schedule`, in order.
+std::vector<std::size_t> segmentsOfRobot(const Schedule& schedule, int robot) {
+  std::vector<std::size_t> result;
+  for (std::size_t s = 0; s < schedule.segments.size(); ++s) {
+    if (schedule.segments[s].robot == robot) result.push_back(s);
+  }
+  return result;
 }
 
 /// Per robot, the earliest time [s] at which it does something else in `b` than in `a`: up to
@@ -608,13 +600,7 @@ std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int r
   std::vector<double> result(static_cast<std::size_t>(robots), std::numeric_limits<double>::infinity());
   for (int r = 0; r < robots; ++r) {
     double& t = result[static_cast<std::size_t>(r)];
-    std::vector<std::size_t> in_a, in_b;
-    for (std::size_t s = 0; s < a.segments.size(); ++s) {
-      if (a.segments[s].robot == r) in_a.push_back(s);
-    }
-    for (std::size_t s = 0; s < b.segments.size(); ++s) {
-      if (b.segments[s].robot == r) in_b.push_back(s);
-    }
+    const std::vector<std::size_t> in_a = segmentsOfRobot(a, r), in_b = segmentsOfRobot(b, r);
     for (std::size_t k = 0; k < std::max(in_a.size(), in_b.size()); ++k) {
       if (k >= in_a.size() || k >= in_b.size()) {
         t = std::min(t, toSeconds(k < in_a.size() ? a.start[in_a[k]] : b.start[in_b[k]]));
@@ -630,6 +616,12 @@ std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int r
     }
   }
   return result;
+}
+
+}  // namespace
+
+std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
+  return firstConflictPairs(graph, schedule, from, nullptr, nullptr);
 }
 
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,

@@ -23,7 +23,8 @@
 // constraints cannot all hold).
 //
 // High level: best-first over constraint sets by makespan (ties: fewer constraints, then
-// creation order). A node's schedule is checked robot against robot, continuously in time:
+// creation order), or depth first along time (NodeOrder); with a bound (makespan_below) nodes
+// not shorter than it are dropped. A node's schedule is checked robot against robot, continuously in time:
 // both robots' exact configurations at a grid of times fine enough that no point of either
 // robot (held object included) moves more than the collision scene's motion_step between two
 // checks, so the margin covers the motion in between (times of every segment and key, plus a
@@ -109,7 +110,9 @@ struct ConflictResult {
   int nodes = 0;            ///< high-level nodes expanded
   int constraints = 0;      ///< precedences, detours and parkings in the solution
   int reroutes = 0;         ///< detours and parkings tried
-  std::string reason;       ///< for kUnresolvable / kBudget: the last conflict found
+  /// for kUnresolvable / kBudget: the last conflict found, or why no schedule could start
+  /// (contradicting precedences, none shorter than makespan_below)
+  std::string reason;
   /// Conflicts that no order of the two items could resolve, as the pair of transitions
   /// (MotionTransition ids) the items belong to, in the order found, without repeats: the
   /// hyperarc-hyperarc scheduling constraints to feed back to the task search. An item belongs
@@ -136,20 +139,15 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
                                 const ConflictResolutionBudget& budget,
                                 SequentialSteps steps = SequentialSteps::kOneAfterAnother);
 
-/// A robot's full configuration (arm, fingers) and held object at time t of a schedule.
-struct RobotSnapshot {
-  Eigen::VectorXd q;
-  std::optional<HeldObject> held;
-};
-RobotSnapshot snapshotAt(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t);
-
 /// Checks a schedule robot against robot at the resolution described above; returns the first
 /// colliding time [s] and robots, or std::nullopt when none collide. Independent of the
-/// search: tests and the plan writer use it to confirm a result.
+/// search: tests use it to confirm a result.
 struct RobotConflict {
   double t = 0.0;
   int robot_a = -1, robot_b = -1;
-  int item_a = -1, item_b = -1;  ///< segment index, or -1 - k for standing still before segment k
+  /// the robot's k-th segment (counted along that robot's timeline, not an index into
+  /// Schedule::segments), or -1 - k for standing still before its k-th segment
+  int item_a = -1, item_b = -1;
 };
 /// `from` [s]: the schedule is known to be free before it (check intervals ending after it).
 std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from = 0.0);

@@ -33,16 +33,19 @@ render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
   const int x_lo = kLeft, x_hi = width - kLegendWidth, y_lo = height - kBottom, y_hi = kTop;  // pixel bounds
   const PlotArea area{x_lo, x_hi, y_lo, y_hi};
 
-  double x_max = 0.0, y_min = std::numeric_limits<double>::infinity(), y_max = 0.0;
+  double x_min = std::numeric_limits<double>::infinity(), x_max = 0.0;
+  double y_min = std::numeric_limits<double>::infinity(), y_max = 0.0;
   for (const PlotSeries& s : plot.series) {
     for (const auto& p : s.points) {
       if (!drawn(plot, p)) continue;
+      x_min = std::min(x_min, p.first);
       x_max = std::max(x_max, p.first);
       y_min = std::min(y_min, p.second);
       y_max = std::max(y_max, p.second);
     }
   }
   if (x_max <= 0.0) x_max = 1.0;
+  if (x_min == x_max) x_max *= 2.0;  // one column of points (one object count): in the middle
   const double x_step = tickStep(x_max, 10);
   x_max = x_step * std::ceil(x_max / x_step);
   const auto px = [&](double x) { return x_lo + (x_hi - x_lo) * x / x_max; };

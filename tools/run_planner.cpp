@@ -53,7 +53,7 @@ std::string describePlanResult(const planner::PlanResult& result) {
       << s.conflict_constraints << " constraints in the plan's conflict resolution\n";
   if (result.plan) {
     out << std::setprecision(2) << "plan: " << result.plan->actions.size() << " actions, makespan " << s.makespan
-        << " s (optimistic " << s.optimistic_makespan << " s)\n";
+        << " s (" << s.unresolved_makespan << " s before robot-robot conflicts are resolved)\n";
   }
   return out.str();
 }

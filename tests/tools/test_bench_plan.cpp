@@ -229,5 +229,27 @@ TEST_CASE("a plot marks a dashed series of a single point, which has no line to 
   CHECK(red > 20);
 }
 
+TEST_CASE("a plot of a single object count draws it in the middle, not at the right edge", "[bench_plan]") {
+  LinePlot plot;
+  plot.log_y = true;
+  plot.series.push_back({"ours", {0.0, 0.0, 1.0}, false, {{16, 30.0}}});
+  const render::Image image = drawLinePlot(plot, 800, 400);
+  // the blue marker's pixels, left of the legend: the plot area runs from x = 100 to 440
+  double sum = 0.0;
+  int blue = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width - 360; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[2] > 200 && p[0] < 60 && p[1] < 60) {
+        sum += x;
+        ++blue;
+      }
+    }
+  }
+  REQUIRE(blue > 20);
+  CHECK(sum / blue > 180.0);
+  CHECK(sum / blue < 360.0);
+}
+
 }  // namespace
 }  // namespace dashbed::tools
