@@ -24,19 +24,20 @@
 //
 // High level: best-first over constraint sets by makespan (ties: fewer constraints, then
 // creation order), or depth first along time (NodeOrder); with a bound (makespan_below) nodes
-// not shorter than it are dropped. A node's schedule is checked robot against robot, continuously in time:
-// both robots' exact configurations at a grid of times fine enough that no point of either
-// robot (held object included) moves more than the collision scene's motion_step between two
-// checks, so the margin covers the motion in between (times of every segment and key, plus a
-// 20 ms grid, each interval split into the larger of the two robots' CollisionScene::motionSteps
-// times its peak over mean speed there: 1 while cruising, up to 2 on a ramp from or to rest).
-// Samples, and whole intervals, within the clearance of the last sample measured
-// (CollisionChecker::robotsClearance) are free and are not evaluated. At the earliest conflict,
-// between item A of robot a and item B of robot b (an item is a segment, or the robot standing
-// still between two segments), the node branches into "A ends before B starts" and "B ends before A starts" — each a precedence
-// (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. When
-// neither order can hold (a cycle with the schedule's own precedences), the low level changes
-// a robot's route on its roadmap instead (at most max_reroutes times per call):
+// not shorter than it are dropped. A node's schedule is checked robot against robot,
+// continuously in time: both robots' exact configurations at a grid of times fine enough that
+// no point of either robot (held object included) moves more than the collision scene's
+// motion_step between two checks, so the margin covers the motion in between (times of every
+// segment and key, plus a 20 ms grid, each interval split into the larger of the two robots'
+// CollisionScene::motionSteps times its peak over mean speed there: 1 while cruising, up to 2
+// on a ramp from or to rest). Samples, and whole intervals, within the clearance of the last
+// sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. At the
+// earliest conflict, between item A of robot a and item B of robot b (an item is a segment, or
+// the robot standing still between two segments), the node branches into "A ends before B
+// starts" and "B ends before A starts" — each a precedence (hyperarc-hyperarc or
+// vertex-hyperarc scheduling constraint) on the segment starts. When neither order can hold (a
+// cycle with the schedule's own precedences), the low level changes a robot's route on its
+// roadmap instead (at most max_reroutes times per call):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
