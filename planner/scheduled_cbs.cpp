@@ -117,11 +117,15 @@ class ScheduleView {
   ScheduleView(const MotionHypergraph& graph, const Schedule& schedule) : graph_(&graph), schedule_(&schedule) {
     timelines_.resize(graph.world().world->robots.size());
     starts_.resize(timelines_.size());
+    ends_.resize(timelines_.size());
     for (std::size_t s = 0; s < schedule.segments.size(); ++s) {
       const int robot = schedule.segments[s].robot;
       timelines_[robot].segments.push_back(static_cast<int>(s));
       timelines_[robot].times.push_back(pointTimes(schedule.segments[s], graph.timing()));
       starts_[robot].push_back(toSeconds(schedule.start[s]));
+      // from whole milliseconds: the same double as the key time it ends at, with no rounding
+      // error of a sum of seconds
+      ends_[robot].push_back(toSeconds(schedule.start[s] + schedule.segments[s].duration));
     }
   }
 
@@ -143,7 +147,7 @@ class ScheduleView {
       return state;
     }
     const ScheduleSegment& seg = schedule_->segments[line.segments[k - 1]];
-    const double end = starts[k - 1] + toSeconds(seg.duration);
+    const double end = ends_[robot][k - 1];
     if (t < end || (t == end && !after)) {
       evaluate(seg, line.times[k - 1], t - starts[k - 1], after, state);
       state.item = static_cast<int>(k - 1);
@@ -219,6 +223,7 @@ class ScheduleView {
   const Schedule* schedule_;
   std::vector<Timeline> timelines_;
   std::vector<std::vector<double>> starts_;  // [robot][k] start of its segment k [s]
+  std::vector<std::vector<double>> ends_;    // [robot][k] end of its segment k [s]
 };
 
 /// The earliest schedule satisfying `edges`, or std::nullopt for a positive cycle.
@@ -751,6 +756,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     const int ra = conflict->robot_a, rb = conflict->robot_b;
     // a child repeats this schedule, free before the conflict, until their first difference
     const auto push = [&](Node child) {
+      if (budget.makespan_below && child.schedule.makespan >= *budget.makespan_below) return false;
       const std::vector<double> differ = firstDifferences(node.schedule, child.schedule, robots);
       child.clear_until = std::min(conflict->t, *std::min_element(differ.begin(), differ.end()));
       // per robot pair: what this node found free, as long as both robots do the same
@@ -759,8 +765,8 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         for (int b = a + 1; b < robots; ++b) known.same[a * robots + b] = std::min(differ[a], differ[b]);
       }
       child.known = std::move(known);
-      if (budget.makespan_below && child.schedule.makespan >= *budget.makespan_below) return;
       open.push(std::move(child));
+      return true;
     };
     // time: A before B, B before A
     bool ordered = false;
@@ -782,10 +788,8 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         early[a].early = true;
         child = make(std::move(early), std::move(extra), node.detours, node.parkings);
       }
-      if (child) {
-        push(std::move(*child));
-        ordered = true;
-      }
+      // an order whose schedule is not below the bound leaves the conflict to a reroute
+      if (child && push(std::move(*child))) ordered = true;
     }
     // space, when time cannot help: a robot on a move takes a detour around where the other one
     // is meanwhile; a robot standing before a move waits somewhere out of the other one's way

@@ -1,0 +1,91 @@
+// The robot-robot check of conflict resolution (firstConflict) on schedules written by hand:
+// which item of each robot a conflict at an exact instant belongs to.
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <optional>
+
+#include "core/world_loader.h"
+#include "planner/collision_checker.h"
+#include "planner/home_check.h"
+#include "planner/scheduled_cbs.h"
+#include "planner/timing.h"
+#include "tests/planner/dash_test_support.h"
+
+using namespace dashbed;
+using namespace dashbed::planner;
+using namespace dashbed::planner::testing;
+
+namespace {
+
+/// A configuration reaching out over the table, the base turned by `pan` [rad].
+core::ArmConfig reachingOut(double pan) { return {pan, -0.35, 0.35, -1.5708, -1.5708, 0.0}; }
+
+}  // namespace
+
+TEST_CASE("a robot whose move ends at the instant of a conflict stands after it, whatever the rounding of seconds",
+          "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  const MotionHypergraph graph(world, task_space, 7);
+  const CollisionScene& scene = graph.scene();
+  CollisionChecker checker(scene);
+  const core::ArmConfig home_a = world.world->robots[0].home, home_b = world.world->robots[1].home;
+
+  // robot a moves out over the table and stays; robot b, at home until then, is out there as
+  // well from the instant a's move ends (a jump no plan makes, so that the two robots first
+  // collide at exactly that instant)
+  const std::array<double, 4> pans = {0.0, 3.141592653589793, 1.5708, -1.5708};
+  std::optional<std::pair<core::ArmConfig, core::ArmConfig>> out;  // (a's, b's)
+  const auto free = [&](const core::ArmConfig& qa, const core::ArmConfig& qb) {
+    return checker.robotsFree(0, scene.configuration(0, qa, kFingersOpen), std::nullopt, 1,
+                              scene.configuration(1, qb, kFingersOpen), std::nullopt);
+  };
+  for (double pan_a : pans) {
+    for (double pan_b : pans) {
+      const core::ArmConfig qa = reachingOut(pan_a), qb = reachingOut(pan_b);
+      if (!out && !free(qa, qb) && free(qa, home_b) && free(home_a, qb) && free(home_a, home_b)) out.emplace(qa, qb);
+    }
+  }
+  REQUIRE(out);
+  Move move_a;
+  move_a.robot = 0;
+  move_a.path = {home_a, out->first};
+  move_a.duration = restToRestDuration(home_a, out->first, graph.timing());
+  core::ArmConfig turned_b = out->second;  // b's wrist turns while it is out there
+  turned_b[5] += 0.5;
+  Move turn_b;
+  turn_b.robot = 1;
+  turn_b.path = {out->second, turned_b};
+  turn_b.duration = restToRestDuration(out->second, turned_b, graph.timing());
+  REQUIRE(move_a.duration > 0);
+
+  // a start whose seconds plus the move's seconds come out above the seconds of their sum in
+  // whole milliseconds (0.1 + 0.2 > 0.3 in doubles)
+  Millis start = 1;
+  while (start < 1000 && toSeconds(start) + toSeconds(move_a.duration) <= toSeconds(start + move_a.duration)) ++start;
+  REQUIRE(start < 1000);
+  const Millis end = start + move_a.duration;
+
+  Schedule schedule;
+  ScheduleSegment seg_a;
+  seg_a.robot = 0;
+  seg_a.move = &move_a;
+  seg_a.duration = move_a.duration;
+  seg_a.finger = kFingersOpen;
+  ScheduleSegment seg_b = seg_a;
+  seg_b.robot = 1;
+  seg_b.move = &turn_b;
+  seg_b.duration = turn_b.duration;
+  schedule.segments = {seg_a, seg_b};
+  schedule.start = {start, end};
+  schedule.makespan = end + turn_b.duration;
+
+  const std::optional<RobotConflict> conflict = firstConflict(graph, schedule);
+  REQUIRE(conflict);
+  CHECK(conflict->t == toSeconds(end));
+  CHECK(conflict->robot_a == 0);
+  CHECK(conflict->robot_b == 1);
+  CHECK(conflict->item_a == -2);  // standing after its move (its only segment), not on it
+  CHECK(conflict->item_b == 0);   // on its segment, which starts then
+}
