@@ -7,7 +7,10 @@
 #include <limits>
 #include <queue>
 #include <sstream>
+#include <stdexcept>
 #include <tuple>
+
+#include "controllers/trajectory_interpolator.h"
 
 namespace dashbed::planner {
 namespace {
@@ -92,10 +95,47 @@ std::vector<Millis> pointTimes(const ScheduleSegment& seg, const TimingLimits& l
   return times;
 }
 
-/// The robot's timeline in a schedule: its segments (global indices) and their point times.
+/// The curve a transition's keys are followed along: the plan writes them without velocities,
+/// so the simulator's interpolator comes to rest at the first and last key and passes the
+/// others shape-preserving (each joint monotone between two keys). Times from the segment's
+/// start [s].
+controllers::TrajectoryInterpolator keyCurve(const TransitionMotion& motion) {
+  std::vector<core::TrajectoryPoint> points;
+  points.reserve(motion.keys.size());
+  for (const TransitionMotion::Key& key : motion.keys) points.push_back({toSeconds(key.t), key.q, std::nullopt});
+  return controllers::TrajectoryInterpolator(points);
+}
+
+/// Over [a, b] within one piece of `curve`: its peak speed over its mean speed, the largest
+/// over the joints. A joint's speed there is a quadratic v(s), s in [0, 1], known from v(0),
+/// v(1) and its mean m: v = v0 + c1 s + c2 s^2 with c2 = 3 (v0 + v1) - 6 m, c1 = 6 m - 4 v0 -
+/// 2 v1. Each joint is monotone within a piece, so v keeps its sign and the ratio is at most 3
+/// (v = c s^2).
+double curvePeakOverMean(const controllers::TrajectoryInterpolator& curve, double a, double b) {
+  constexpr double kMaxRatio = 3.0;
+  if (b <= a) return 1.0;
+  const controllers::JointReference ra = curve.at(a), rb = curve.at(b);
+  double ratio = 1.0;
+  for (int j = 0; j < 6; ++j) {
+    const double v0 = ra.qd[j], v1 = rb.qd[j], m = (rb.q[j] - ra.q[j]) / (b - a);
+    const double c2 = 3.0 * (v0 + v1) - 6.0 * m, c1 = 6.0 * m - 4.0 * v0 - 2.0 * v1;
+    double peak = std::max(std::abs(v0), std::abs(v1));
+    if (c2 != 0.0) {
+      const double s = -c1 / (2.0 * c2);
+      if (s > 0.0 && s < 1.0) peak = std::max(peak, std::abs(v0 + c1 * s + c2 * s * s));
+    }
+    if (peak == 0.0) continue;
+    ratio = std::max(ratio, std::abs(m) * kMaxRatio <= peak ? kMaxRatio : peak / std::abs(m));
+  }
+  return ratio;
+}
+
+/// The robot's timeline in a schedule: its segments (global indices), their point times and,
+/// for transitions, their key curves.
 struct Timeline {
   std::vector<int> segments;
   std::vector<std::vector<Millis>> times;
+  std::vector<std::optional<controllers::TrajectoryInterpolator>> curves;
 };
 
 /// Where a robot is at time t: arm configuration, finger position, held object, and the item
@@ -122,6 +162,8 @@ class ScheduleView {
       const int robot = schedule.segments[s].robot;
       timelines_[robot].segments.push_back(static_cast<int>(s));
       timelines_[robot].times.push_back(pointTimes(schedule.segments[s], graph.timing()));
+      const TransitionMotion* motion = schedule.segments[s].motion;
+      timelines_[robot].curves.push_back(motion != nullptr ? std::optional(keyCurve(*motion)) : std::nullopt);
       starts_[robot].push_back(toSeconds(schedule.start[s]));
       // from whole milliseconds: the same double as the key time it ends at, with no rounding
       // error of a sum of seconds
@@ -148,30 +190,35 @@ class ScheduleView {
     }
     const ScheduleSegment& seg = schedule_->segments[line.segments[k - 1]];
     const double end = ends_[robot][k - 1];
+    const auto& curve = line.curves[k - 1];
     if (t < end || (t == end && !after)) {
-      evaluate(seg, line.times[k - 1], t - starts[k - 1], after, state);
+      evaluate(seg, line.times[k - 1], curve, t - starts[k - 1], after, state);
       state.item = static_cast<int>(k - 1);
     } else {
-      evaluate(seg, line.times[k - 1], toSeconds(seg.duration), false, state);  // standing at its end
+      evaluate(seg, line.times[k - 1], curve, toSeconds(seg.duration), false, state);  // standing at its end
     }
     return state;
   }
 
   /// Over [t0, t1], which no point time of `robot` lies strictly within and during which it is
   /// on `item` (RobotState::item at t0): its peak speed over its mean speed
-  /// (restToRestPeakOverMean on a move's piece; 1 along a transition's keys, which are
-  /// interpolated at constant speed, or standing).
+  /// (restToRestPeakOverMean on a move's piece, curvePeakOverMean between a transition's keys;
+  /// 1 standing).
   double peakOverMeanSpeed(int robot, int item, double t0, double t1) const {
     if (item < 0) return 1.0;
     const ScheduleSegment& seg = schedule_->segments[timelines_[robot].segments[item]];
     const std::vector<Millis>& times = timelines_[robot].times[item];
-    if (seg.move == nullptr || seg.move->path.size() < 2) return 1.0;
     const double start = starts_[robot][item];
+    if (seg.motion != nullptr) return curvePeakOverMean(*timelines_[robot].curves[item], t0 - start, t1 - start);
+    if (seg.move->path.size() < 2) return 1.0;
     const std::size_t i = pieceAt(times, t0 - start, true);
     const double piece_start = start + toSeconds(times[i]);
     return restToRestPeakOverMean(seg.move->path[i], seg.move->path[i + 1], times[i + 1] - times[i],
                                   t0 - piece_start, t1 - piece_start, graph_->timing());
   }
+
+  /// Whether `robot` follows a transition's key curve on `item` (RobotState::item).
+  bool onCurve(int robot, int item) const { return item >= 0 && timelines_[robot].curves[item].has_value(); }
 
   /// The configuration the collision checker wants for `robot` in `state`.
   Eigen::VectorXd full(int robot, const RobotState& state) const {
@@ -193,18 +240,14 @@ class ScheduleView {
                                  times.size() >= 2 ? times.size() - 2 : 0);
   }
 
-  void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times, double tau, bool after,
+  /// `curve`: a transition's key curve (keyCurve).
+  void evaluate(const ScheduleSegment& seg, const std::vector<Millis>& times,
+                const std::optional<controllers::TrajectoryInterpolator>& curve, double tau, bool after,
                 RobotState& state) const {
     const std::size_t i = pieceAt(times, tau, after);
     if (seg.motion != nullptr) {
       const TransitionMotion& m = *seg.motion;
-      if (times.size() == 1) {
-        state.q = m.keys[0].q;
-        return;
-      }
-      const double t0 = toSeconds(times[i]), t1 = toSeconds(times[i + 1]);
-      const double s = std::clamp((tau - t0) / (t1 - t0), 0.0, 1.0);
-      for (int j = 0; j < 6; ++j) state.q[j] = m.keys[i].q[j] + s * (m.keys[i + 1].q[j] - m.keys[i].q[j]);
+      state.q = curve->at(tau).q;
       state.finger = m.finger[i];
       state.held = m.held[i];
       return;
@@ -481,9 +524,10 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         std::optional<HeldObject> held_a, held_b;
         double clearance = -1.0;
       } measured;
-      // the interval's pieces lie within the clearance of `measured` (each robot moves along
-      // one straight piece, and the travel from a point, a weighted sum of |dq|, is largest at
-      // one of the piece's ends)
+      // the interval's pieces lie within the clearance of `measured` (the travel from a point
+      // is a weighted sum of |dq|: along a move's straight piece it is largest at one of the
+      // piece's ends; along a transition's cubic, whose joints each move monotonically, at the
+      // corner of the box between the ends farthest from the point)
       // (q0: the interval's start configuration of each robot)
       const auto within_measured = [&](const RobotState& a0, const Eigen::VectorXd& qa0, const RobotState& a1,
                                        const RobotState& b0, const Eigen::VectorXd& qb0, const RobotState& b1) {
@@ -492,8 +536,12 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
         }
         const auto travel = [&](int r, const Eigen::VectorXd& q, const RobotState& s0, const Eigen::VectorXd& q0,
                                 const RobotState& s1) {
-          return std::max(scene.motionTravel(r, q, q0, s0.held),
-                          scene.motionTravel(r, q, view.full(r, {s1.q, s0.finger, s0.held, 0}), s0.held));
+          const Eigen::VectorXd q1 = view.full(r, {s1.q, s0.finger, s0.held, 0});
+          if (!view.onCurve(r, s0.item)) {
+            return std::max(scene.motionTravel(r, q, q0, s0.held), scene.motionTravel(r, q, q1, s0.held));
+          }
+          const Eigen::VectorXd corner = ((q - q0).cwiseAbs().array() >= (q - q1).cwiseAbs().array()).select(q0, q1);
+          return scene.motionTravel(r, q, corner, s0.held);
         };
         return travel(a, measured.qa, a0, qa0, a1) + travel(b, measured.qb, b0, qb0, b1) + kClearanceSlack <
                measured.clearance;
@@ -544,8 +592,8 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
           return view.full(r, {s.q, s0.finger, s0.held, 0});
         };
         // Samples are checked in order; after a free one, the samples up to which the robots'
-        // points together travel less than their clearance there are free as well (each robot
-        // moves along one straight piece within the interval), and are skipped.
+        // points together travel less than their clearance there are free as well (each joint
+        // moves monotonically within the interval), and are skipped.
         Eigen::VectorXd qa = state_at(a, 0, a0, a1), qb = state_at(b, 0, b0, b1);
         for (int k = 0; k <= steps;) {
           const double t = t0 + (t1 - t0) * k / steps;
@@ -557,8 +605,8 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
           }
           measured = {qa, qb, a0.held, b0.held, clearance};
           // The next sample checked is the first the robots may reach within the clearance.
-          // Their travel from sample k grows with the samples after it (each robot moves along
-          // one straight piece), so it is found by doubling the stride, then halving it.
+          // Their travel from sample k grows with the samples after it (each joint moves
+          // monotonically), so it is found by doubling the stride, then halving it.
           Eigen::VectorXd reach_a, reach_b;  // the states at the first sample found to reach
           const auto reaches = [&](int n) {
             Eigen::VectorXd na = state_at(a, n, a0, a1), nb = state_at(b, n, b0, b1);
@@ -627,6 +675,13 @@ std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int r
 
 std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
   return firstConflictPairs(graph, schedule, from, nullptr, nullptr);
+}
+
+core::ArmConfig scheduledArm(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {
+  if (robot < 0 || static_cast<std::size_t>(robot) >= graph.world().world->robots.size()) {
+    throw std::out_of_range("scheduledArm: no robot " + std::to_string(robot));
+  }
+  return ScheduleView(graph, schedule).at(robot, t, true).q;
 }
 
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,

@@ -25,12 +25,15 @@
 // High level: best-first over constraint sets by makespan (ties: fewer constraints, then
 // creation order), or depth first along time (NodeOrder); with a bound (makespan_below) nodes
 // not shorter than it are dropped. A node's schedule is checked robot against robot,
-// continuously in time: both robots' exact configurations at a grid of times fine enough that
-// no point of either robot (held object included) moves more than the collision scene's
-// motion_step between two checks, so the margin covers the motion in between (times of every
-// segment and key, plus a 20 ms grid, each interval split into the larger of the two robots'
-// CollisionScene::motionSteps times its peak over mean speed there: 1 while cruising, up to 2
-// on a ramp from or to rest). Samples, and whole intervals, within the clearance of the last
+// continuously in time: both robots' exact configurations — a move on its time-optimal
+// profile, a transition on the cubic through its keys that the simulator's interpolator
+// follows (controllers::TrajectoryInterpolator, at rest at the first and last key) — at a grid
+// of times fine enough that no point of either robot (held object included) moves more than
+// the collision scene's motion_step between two checks, so the margin covers the motion in
+// between (times of every segment and key, plus a 20 ms grid, each interval split into the
+// larger of the two robots' CollisionScene::motionSteps times its peak over mean speed there:
+// 1 while cruising, up to 2 on a move's ramp from or to rest, up to 3 between keys, where
+// each joint is monotone). Samples, and whole intervals, within the clearance of the last
 // sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. At the
 // earliest conflict, between item A of robot a and item B of robot b (an item is a segment, or
 // the robot standing still between two segments), the node branches into "A ends before B
@@ -152,5 +155,9 @@ struct RobotConflict {
 };
 /// `from` [s]: the schedule is known to be free before it (check intervals ending after it).
 std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from = 0.0);
+
+/// The arm configuration of `robot` at time t [s] of a schedule, as firstConflict checks it (at
+/// an instant where two segments meet, the later one's).
+core::ArmConfig scheduledArm(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t);
 
 }  // namespace dashbed::planner
