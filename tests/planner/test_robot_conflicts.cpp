@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "controllers/trajectory_interpolator.h"
 #include "core/plan.h"
@@ -114,15 +115,16 @@ TEST_CASE("conflict resolution checks the robots where the written plan's interp
   // Along a transition the simulator follows the cubic through the keys, as conflict resolution
   // does; a move is written as samples every 50 ms with their velocities, whose cubics stay
   // within 2e-4 rad of the time-optimal profile conflict resolution checks.
+  std::vector<controllers::TrajectoryInterpolator> written;
+  for (const core::RobotTrajectory& trajectory : plan.trajectories) written.emplace_back(trajectory.points);
   int transitions = 0;
   for (std::size_t s = 0; s < schedule.segments.size(); ++s) {
     const ScheduleSegment& seg = schedule.segments[s];
-    const controllers::TrajectoryInterpolator written(plan.trajectories[static_cast<std::size_t>(seg.robot)].points);
     const double tolerance = seg.motion != nullptr ? 1e-9 : 2e-4;
     transitions += seg.motion != nullptr && seg.motion->keys.size() >= 3 ? 1 : 0;
     for (Millis t = schedule.start[s]; t <= schedule.start[s] + seg.duration; t += 3) {
       const core::ArmConfig checked = scheduledArm(graph, schedule, seg.robot, toSeconds(t));
-      const controllers::JointReference followed = written.at(toSeconds(t));
+      const controllers::JointReference followed = written[static_cast<std::size_t>(seg.robot)].at(toSeconds(t));
       for (int j = 0; j < 6; ++j) {
         INFO("segment " << s << " (robot " << seg.robot << (seg.motion != nullptr ? ", transition" : ", move")
                         << "), t = " << toSeconds(t) << " s, joint " << j);
