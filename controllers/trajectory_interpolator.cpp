@@ -33,29 +33,47 @@ TrajectoryInterpolator::TrajectoryInterpolator(const std::vector<core::Trajector
   }
 }
 
+bool TrajectoryInterpolator::basisAt(double t, Basis& basis) const {
+  if (t <= t_.front() || t_.size() == 1 || t >= t_.back()) return false;
+  basis.i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
+  basis.h = t_[basis.i + 1] - t_[basis.i];
+  const double s = basis.s = (t - t_[basis.i]) / basis.h;
+  // cubic Hermite basis on s in [0, 1]
+  basis.w_p0 = 2 * s * s * s - 3 * s * s + 1;
+  basis.w_m0 = s * s * s - 2 * s * s + s;
+  basis.w_p1 = -2 * s * s * s + 3 * s * s;
+  basis.w_m1 = s * s * s - s * s;
+  return true;
+}
+
+double TrajectoryInterpolator::positionOn(const Basis& b, int j) const {
+  return b.w_p0 * q_[b.i][j] + b.w_m0 * (qd_[b.i][j] * b.h) + b.w_p1 * q_[b.i + 1][j] +
+         b.w_m1 * (qd_[b.i + 1][j] * b.h);
+}
+
+Vector6 TrajectoryInterpolator::position(double t) const {
+  Basis b;
+  if (!basisAt(t, b)) return t <= t_.front() ? q_.front() : q_.back();
+  Vector6 q;
+  for (int j = 0; j < 6; ++j) q[j] = positionOn(b, j);
+  return q;
+}
+
 JointReference TrajectoryInterpolator::at(double t) const {
   JointReference ref;
-  if (t <= t_.front() || t_.size() == 1) {
-    ref.q = q_.front();
+  Basis b;
+  if (!basisAt(t, b)) {
+    ref.q = t <= t_.front() ? q_.front() : q_.back();
     return ref;
   }
-  if (t >= t_.back()) {
-    ref.q = q_.back();
-    return ref;
-  }
-  const std::size_t i = static_cast<std::size_t>(std::upper_bound(t_.begin(), t_.end(), t) - t_.begin()) - 1;
-  const double h = t_[i + 1] - t_[i];
-  const double s = (t - t_[i]) / h;
-  // cubic Hermite basis on s in [0, 1]
-  const double h00 = 2 * s * s * s - 3 * s * s + 1, h10 = s * s * s - 2 * s * s + s;
-  const double h01 = -2 * s * s * s + 3 * s * s, h11 = s * s * s - s * s;
+  const double s = b.s, h = b.h;
   const double d00 = 6 * s * s - 6 * s, d10 = 3 * s * s - 4 * s + 1;
   const double d01 = -6 * s * s + 6 * s, d11 = 3 * s * s - 2 * s;
   const double a00 = 12 * s - 6, a10 = 6 * s - 4, a01 = -12 * s + 6, a11 = 6 * s - 2;
   for (int j = 0; j < 6; ++j) {
-    const double p0 = q_[i][j], p1 = q_[i + 1][j];
-    const double m0 = qd_[i][j] * h, m1 = qd_[i + 1][j] * h;
-    ref.q[j] = h00 * p0 + h10 * m0 + h01 * p1 + h11 * m1;
+    const double p0 = q_[b.i][j], p1 = q_[b.i + 1][j];
+    const double m0 = qd_[b.i][j] * h, m1 = qd_[b.i + 1][j] * h;
+    ref.q[j] = positionOn(b, j);
     ref.qd[j] = (d00 * p0 + d10 * m0 + d01 * p1 + d11 * m1) / h;
     ref.qdd[j] = (a00 * p0 + a10 * m0 + a01 * p1 + a11 * m1) / (h * h);
   }

@@ -260,39 +260,68 @@ double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a
                         std::numeric_limits<double>::infinity());
 }
 
+std::pair<int, double> CollisionChecker::motionSamples(int robot, const detail::MotionRef& motion,
+                                                      const std::optional<HeldObject>& held) const {
+  const double peak = motion.peakOverMean();
+  if (!(peak >= 1.0) || !std::isfinite(peak)) {
+    throw std::invalid_argument("collision check: a curve's peak_over_mean must be finite and at least 1");
+  }
+  if (motion.curve != nullptr && !motion.curve->at) throw std::invalid_argument("collision check: a curve needs at(s, q)");
+  // validates the ends and the held object
+  const double travel = peak * scene_->motionTravel(robot, motion.from, motion.to, held);
+  const double steps = std::ceil(travel / scene_->settings().motion_step - 1e-9);
+  const int n = std::max(1, static_cast<int>(std::min(steps, 1e9)));
+  return {n, travel / n};
+}
+
 bool CollisionChecker::motionFree(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                   std::span<const RestingObject> objects, const std::optional<HeldObject>& held) {
+  return motionFree(robot, detail::MotionRef{q_from, q_to}, objects, held);
+}
+
+bool CollisionChecker::motionFree(int robot, const CurvePiece& piece, std::span<const RestingObject> objects,
+                                  const std::optional<HeldObject>& held) {
+  return motionFree(robot, detail::MotionRef{piece.from, piece.to, &piece}, objects, held);
+}
+
+bool CollisionChecker::motionFree(int robot, const detail::MotionRef& motion, std::span<const RestingObject> objects,
+                                  const std::optional<HeldObject>& held) {
   const detail::SceneData& scene = *scene_->data_;
   const RobotData& data = requireRobot(scene, robot);
-  const int n = scene_->motionSteps(robot, q_from, q_to, held);  // validates the arguments
+  const int n = motionSamples(robot, motion, held).first;
   requireObjects(scene, objects);
   auto& state = *state_;
   auto& slot = state.slots[robot];
-  return !state.sweep(slot, data, q_from, q_to, held, n, [&](double) { return state.robotCollision(slot, objects); });
+  return !state.sweep(slot, data, motion, held, n, [&](double) { return state.robotCollision(slot, objects); });
 }
 
 std::vector<char> CollisionChecker::motionObjectHits(int robot, const Eigen::VectorXd& q_from,
                                                      const Eigen::VectorXd& q_to,
                                                      std::span<const RestingObject> objects,
                                                      const std::optional<HeldObject>& held) {
-  return *motionHits(robot, q_from, q_to, objects, held, false);
+  return *motionHits(robot, detail::MotionRef{q_from, q_to}, objects, held, false);
+}
+
+std::vector<char> CollisionChecker::motionObjectHits(int robot, const CurvePiece& piece,
+                                                     std::span<const RestingObject> objects,
+                                                     const std::optional<HeldObject>& held) {
+  return *motionHits(robot, detail::MotionRef{piece.from, piece.to, &piece}, objects, held, false);
 }
 
 std::optional<std::vector<char>> CollisionChecker::motionCheck(int robot, const Eigen::VectorXd& q_from,
                                                                const Eigen::VectorXd& q_to,
                                                                std::span<const RestingObject> objects,
                                                                const std::optional<HeldObject>& held) {
-  return motionHits(robot, q_from, q_to, objects, held, true);
+  return motionHits(robot, detail::MotionRef{q_from, q_to}, objects, held, true);
 }
 
-std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const Eigen::VectorXd& q_from,
-                                                              const Eigen::VectorXd& q_to,
+std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const detail::MotionRef& motion,
                                                               std::span<const RestingObject> objects,
                                                               const std::optional<HeldObject>& held,
                                                               bool check_robot) {
   const detail::SceneData& scene = *scene_->data_;
   const RobotData& data = requireRobot(scene, robot);
-  const int n = scene_->motionSteps(robot, q_from, q_to, held);  // validates the arguments
+  const int n = motionSamples(robot, motion, held).first;
   requireObjects(scene, objects);
   std::vector<char> hits(objects.size(), 0);
   if (objects.empty() && !check_robot) return hits;
@@ -314,7 +343,7 @@ std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const E
   bool collides = false;
   std::size_t left = 0;
   // stops at a collision with the static scene or itself, or when nothing is left to find
-  state.sweep(slot, data, q_from, q_to, held, n, [&](double) {
+  state.sweep(slot, data, motion, held, n, [&](double) {
     if (check_robot && (state.staticHit(slot) || state.selfHit(slot))) return collides = true;
     if (first || left > 0) detail::CheckerState::updateBounds(slot, held_data);
     if (first) {
@@ -357,7 +386,7 @@ bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from,
   auto& slot_a = state.slots[robot_a];
   auto& slot_b = state.slots[robot_b];
   state.q_b.resize(q_b_from.size());
-  return !state.sweep(slot_a, a, q_a_from, q_a_to, held_a, n, [&](double s) {
+  return !state.sweep(slot_a, a, detail::MotionRef{q_a_from, q_a_to}, held_a, n, [&](double s) {
     state.q_b.noalias() = q_b_from + s * (q_b_to - q_b_from);
     state.forward(slot_b, b, state.q_b, held_b);
     return state.interRobotHit(slot_a, slot_b).has_value();
@@ -367,10 +396,21 @@ bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from,
 bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                      const std::optional<HeldObject>& held,
                                      std::span<const StandingRobot> others) {
+  return motionClearOf(robot, detail::MotionRef{q_from, q_to}, held, others);
+}
+
+bool CollisionChecker::motionClearOf(int robot, const CurvePiece& piece, const std::optional<HeldObject>& held,
+                                     std::span<const StandingRobot> others) {
+  return motionClearOf(robot, detail::MotionRef{piece.from, piece.to, &piece}, held, others);
+}
+
+bool CollisionChecker::motionClearOf(int robot, const detail::MotionRef& motion, const std::optional<HeldObject>& held,
+                                     std::span<const StandingRobot> others) {
   const detail::SceneData& scene = *scene_->data_;
   const RobotData& data = requireRobot(scene, robot);
-  // a standing robot takes one step: motionsFree would check this many samples
-  const int n = scene_->motionSteps(robot, q_from, q_to, held);  // validates the arguments
+  // a standing robot takes one step: motionsFree would check this many samples (a curve's
+  // samples are motionFree's)
+  const auto [n, step_travel] = motionSamples(robot, motion, held);
   auto& state = *state_;
   state.standing.resize(others.size());
   for (std::size_t k = 0; k < others.size(); ++k) {
@@ -386,15 +426,13 @@ bool CollisionChecker::motionClearOf(int robot, const Eigen::VectorXd& q_from, c
   // well and are not evaluated: the same answer, most samples skipped. The clearance: the gaps
   // between the robots' bounds, then robotsClearance of those whose bounds overlap (while the
   // clearance so far would still skip a sample, and until one skips too few to pay for itself)
-  const double step_travel = scene_->motionTravel(robot, q_from, q_to, held) / n;
   std::vector<char>& known_free = state.known_free;
   known_free.assign(static_cast<std::size_t>(n) + 1, 0);
   auto& slot = state.slots[robot];
-  state.q_a.resize(q_from.size());
   bool measure = true;
   for (const int i : state.bisectionOrder(n)) {
     if (known_free[i]) continue;
-    state.q_a.noalias() = q_from + (static_cast<double>(i) / n) * (q_to - q_from);
+    motion.at(static_cast<double>(i) / n, state.q_a);
     state.forward(slot, data, state.q_a, held);
     double clearance = std::numeric_limits<double>::infinity();
     for (auto& other : state.standing) {

@@ -38,7 +38,8 @@
 //    robot; when two robots hold the same object (a handoff) the object is not checked
 //    against either robot's fingers.
 //
-// Motions are straight lines in joint space, checked at samples spaced so that no point of
+// Motions are straight lines in joint space, or curves on which every joint is monotone (a
+// transition's key curve, CurvePiece), checked at samples spaced so that no point of
 // the robot (held object included) travels more than CollisionSettings::motion_step between
 // two samples. The bound on a point's travel is sum_j R_j |dq_j|, where R_j bounds the distance
 // of any point moved by joint j from that joint's origin (1 for prismatic joints, whose points
@@ -54,6 +55,7 @@
 // 0.7 mrad (0.5 rad on every joint: about 690 samples).
 
 #include <cstdint>
+#include <functional>
 #include <memory>
 #include <optional>
 #include <span>
@@ -116,6 +118,20 @@ struct TimedPath {
   std::vector<Eigen::VectorXd> q;
 };
 
+/// A curved motion of one robot from `from` to `to` (all model positions, arm then fingers):
+/// at(s, q) writes its configuration at s in [0, 1], from at 0 and to at 1. The checks rely on
+/// two properties of the curve: each position is monotone in s, so no point travels farther
+/// than along the straight line between the ends; and no position moves faster in s than
+/// peak_over_mean times its mean rate |to - from|, so peak_over_mean times as many samples as
+/// the straight line's keep every step within the motion step. A transition's key curve
+/// between two keys (controllers::TrajectoryInterpolator, planner/key_curve.h) has both.
+struct CurvePiece {
+  Eigen::VectorXd from;
+  Eigen::VectorXd to;
+  std::function<void(double s, Eigen::VectorXd& q)> at;
+  double peak_over_mean = 1.0;  ///< >= 1
+};
+
 /// A self-collision body pair the checker never tests, and why.
 struct IgnoredSelfPair {
   std::string body_a;  ///< named after the body's first link
@@ -126,6 +142,7 @@ struct IgnoredSelfPair {
 namespace detail {
 struct SceneData;
 struct CheckerState;
+struct MotionRef;
 }  // namespace detail
 
 /// The immutable collision model of a world: static geometry in a broad phase, the robots'
@@ -234,6 +251,10 @@ class CollisionChecker {
   bool motionFree(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                   std::span<const RestingObject> objects,
                   const std::optional<HeldObject>& held = std::nullopt);
+  /// motionFree along a curve, at ceil(peak_over_mean x the straight line's travel / motion
+  /// step) intervals.
+  bool motionFree(int robot, const CurvePiece& piece, std::span<const RestingObject> objects,
+                  const std::optional<HeldObject>& held = std::nullopt);
 
   /// Which of `objects` the straight motion q_from -> q_to touches: entry i is true when the
   /// robot (with `held`) collides with objects[i] at some of the motion's samples (the samples
@@ -241,6 +262,9 @@ class CollisionChecker {
   /// motionFree finds free against them, motionFree(..., {objects[i]}, ...) == !hits[i].
   std::vector<char> motionObjectHits(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                      std::span<const RestingObject> objects,
+                                     const std::optional<HeldObject>& held = std::nullopt);
+  /// motionObjectHits along a curve, at motionFree's samples of it.
+  std::vector<char> motionObjectHits(int robot, const CurvePiece& piece, std::span<const RestingObject> objects,
                                      const std::optional<HeldObject>& held = std::nullopt);
 
   /// motionFree against the static scene and the robot itself (no objects) and, when free,
@@ -263,6 +287,9 @@ class CollisionChecker {
   /// not evaluated. True when free of all.
   bool motionClearOf(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                      const std::optional<HeldObject>& held, std::span<const StandingRobot> others);
+  /// motionClearOf along a curve, at motionFree's samples of it.
+  bool motionClearOf(int robot, const CurvePiece& piece, const std::optional<HeldObject>& held,
+                     std::span<const StandingRobot> others);
 
   /// robotsFree, and when free a lower bound on the distance between the two robots' bounding
   /// spheres (bodies and held objects; pairs of bodies neither of which moves left out), so that
@@ -284,9 +311,17 @@ class CollisionChecker {
   /// Checks the arguments of a robot-against-robot query and poses both robots for it.
   void placePair(int robot_a, const Eigen::VectorXd& q_a, const std::optional<HeldObject>& held_a, int robot_b,
                  const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b);
-  std::optional<std::vector<char>> motionHits(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
+  /// Samples of a motion and the bound on any point's travel between two of them [m]; checks
+  /// the motion's ends and held object.
+  std::pair<int, double> motionSamples(int robot, const detail::MotionRef& motion,
+                                       const std::optional<HeldObject>& held) const;
+  bool motionFree(int robot, const detail::MotionRef& motion, std::span<const RestingObject> objects,
+                  const std::optional<HeldObject>& held);
+  std::optional<std::vector<char>> motionHits(int robot, const detail::MotionRef& motion,
                                               std::span<const RestingObject> objects,
                                               const std::optional<HeldObject>& held, bool check_robot);
+  bool motionClearOf(int robot, const detail::MotionRef& motion, const std::optional<HeldObject>& held,
+                     std::span<const StandingRobot> others);
 
   const CollisionScene* scene_;
   std::unique_ptr<detail::CheckerState> state_;

@@ -97,6 +97,25 @@ struct Hit {
 };
 inline constexpr int kHeldBody = -2;
 
+/// A motion being checked: the straight joint-space line from -> to, or a curve between them.
+struct MotionRef {
+  const Eigen::VectorXd& from;
+  const Eigen::VectorXd& to;
+  const CurvePiece* curve = nullptr;
+
+  /// The configuration at s in [0, 1].
+  void at(double s, Eigen::VectorXd& q) const {
+    if (curve != nullptr) {
+      curve->at(s, q);
+      return;
+    }
+    q.resize(from.size());
+    q.noalias() = from + s * (to - from);
+  }
+  /// Bound on any position's rate in s over its mean rate.
+  double peakOverMean() const { return curve != nullptr ? curve->peak_over_mean : 1.0; }
+};
+
 /// The mutable state of the queries: one per checker (and one for building the scene).
 struct CheckerState {
   /// One robot's configuration being checked: body poses, lazily placed shapes, held object.
@@ -442,16 +461,15 @@ struct CheckerState {
     return order;
   }
 
-  /// Places `robot` in `slot` at the n + 1 samples of the straight motion q_from -> q_to, in
-  /// bisection order, calling visit(s) (s in [0, 1] along the motion) after each; stops when
-  /// visit returns true. True when stopped.
+  /// Places `robot` in `slot` at the n + 1 samples of `motion`, in bisection order, calling
+  /// visit(s) (s in [0, 1] along the motion) after each; stops when visit returns true. True
+  /// when stopped.
   template <class Visit>
-  bool sweep(Slot& slot, const RobotData& robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
-             const std::optional<HeldObject>& held, int n, Visit&& visit) {
-    q_a.resize(q_from.size());
+  bool sweep(Slot& slot, const RobotData& robot, const MotionRef& motion, const std::optional<HeldObject>& held,
+             int n, Visit&& visit) {
     for (const int i : bisectionOrder(n)) {
       const double s = static_cast<double>(i) / n;
-      q_a.noalias() = q_from + s * (q_to - q_from);
+      motion.at(s, q_a);
       forward(slot, robot, q_a, held);
       if (visit(s)) return true;
     }

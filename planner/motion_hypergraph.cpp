@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "planner/key_curve.h"
+
 namespace dashbed::planner {
 namespace {
 
@@ -362,10 +364,10 @@ bool MotionHypergraph::clearOfIdle(int transition_id, int robot, IdlePose pose) 
   if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
   const StandingRobot idle{robot, scene_->configuration(robot, idleConfiguration(robot, pose), kFingersOpen), std::nullopt};
   for (const TransitionMotion& motion : transition(transition_id).sample.motions) {
+    const controllers::TrajectoryInterpolator curve = keyCurve(motion);
     for (std::size_t i = 0; i + 1 < motion.keys.size() && it->second; ++i) {
-      it->second = checker_->motionClearOf(motion.robot, scene_->configuration(motion.robot, motion.keys[i].q, motion.finger[i]),
-                                           scene_->configuration(motion.robot, motion.keys[i + 1].q, motion.finger[i]),
-                                           motion.held[i], std::span(&idle, 1));
+      it->second = checker_->motionClearOf(motion.robot, keyCurvePiece(*scene_, motion, curve, i), motion.held[i],
+                                           std::span(&idle, 1));
     }
   }
   return it->second;

@@ -174,7 +174,8 @@ class MotionHypergraph {
   bool homeConflict(int transition, int robot) const;
   /// True when every motion of `transition` keeps clear of `robot` standing at its
   /// idleConfiguration in `pose` with its gripper open, where a sequential plan's idle robots
-  /// wait. A geometric check (unlike homeConflict), made once per pair and pose.
+  /// wait, along the key curves the simulator follows. A geometric check (unlike homeConflict),
+  /// made once per pair and pose.
   bool clearOfIdle(int transition, int robot, IdlePose pose);
   std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size() + home_constraints_.size(); }
   void clearSchedulingConstraints();  ///< all of them

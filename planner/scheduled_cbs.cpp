@@ -10,7 +10,7 @@
 #include <stdexcept>
 #include <tuple>
 
-#include "controllers/trajectory_interpolator.h"
+#include "planner/key_curve.h"
 
 namespace dashbed::planner {
 namespace {
@@ -93,41 +93,6 @@ std::vector<Millis> pointTimes(const ScheduleSegment& seg, const TimingLimits& l
     times.push_back(times.back() + restToRestDuration(seg.move->path[i - 1], seg.move->path[i], limits));
   }
   return times;
-}
-
-/// The curve a transition's keys are followed along: the plan writes them without velocities,
-/// so the simulator's interpolator comes to rest at the first and last key and passes the
-/// others shape-preserving (each joint monotone between two keys). Times from the segment's
-/// start [s].
-controllers::TrajectoryInterpolator keyCurve(const TransitionMotion& motion) {
-  std::vector<core::TrajectoryPoint> points;
-  points.reserve(motion.keys.size());
-  for (const TransitionMotion::Key& key : motion.keys) points.push_back({toSeconds(key.t), key.q, std::nullopt});
-  return controllers::TrajectoryInterpolator(points);
-}
-
-/// Over [a, b] within one piece of `curve`: its peak speed over its mean speed, the largest
-/// over the joints. A joint's speed there is a quadratic v(s), s in [0, 1], known from v(0),
-/// v(1) and its mean m: v = v0 + c1 s + c2 s^2 with c2 = 3 (v0 + v1) - 6 m, c1 = 6 m - 4 v0 -
-/// 2 v1. Each joint is monotone within a piece, so v keeps its sign and the ratio is at most 3
-/// (v = c s^2).
-double curvePeakOverMean(const controllers::TrajectoryInterpolator& curve, double a, double b) {
-  constexpr double kMaxRatio = 3.0;
-  if (b <= a) return 1.0;
-  const controllers::JointReference ra = curve.at(a), rb = curve.at(b);
-  double ratio = 1.0;
-  for (int j = 0; j < 6; ++j) {
-    const double v0 = ra.qd[j], v1 = rb.qd[j], m = (rb.q[j] - ra.q[j]) / (b - a);
-    const double c2 = 3.0 * (v0 + v1) - 6.0 * m, c1 = 6.0 * m - 4.0 * v0 - 2.0 * v1;
-    double peak = std::max(std::abs(v0), std::abs(v1));
-    if (c2 != 0.0) {
-      const double s = -c1 / (2.0 * c2);
-      if (s > 0.0 && s < 1.0) peak = std::max(peak, std::abs(v0 + c1 * s + c2 * s * s));
-    }
-    if (peak == 0.0) continue;
-    ratio = std::max(ratio, std::abs(m) * kMaxRatio <= peak ? kMaxRatio : peak / std::abs(m));
-  }
-  return ratio;
 }
 
 /// The robot's timeline in a schedule: its segments (global indices), their point times and,
@@ -247,7 +212,7 @@ class ScheduleView {
     const std::size_t i = pieceAt(times, tau, after);
     if (seg.motion != nullptr) {
       const TransitionMotion& m = *seg.motion;
-      state.q = curve->at(tau).q;
+      state.q = curve->position(tau);
       state.finger = m.finger[i];
       state.held = m.held[i];
       return;

@@ -9,6 +9,7 @@
 #include <string>
 
 #include "core/grasps.h"
+#include "planner/key_curve.h"
 
 namespace dashbed::planner {
 
@@ -186,17 +187,15 @@ struct Arm {
   const core::PlacedRobot* placed = nullptr;
   ArmConfig home{};
   std::array<double, 6> max_velocity{};  // [rad/s]
-  int positions = 0;                     // collision-checker configuration size (arm + fingers)
 };
 
-Arm armOf(const core::LoadedWorld& world, const CollisionScene& scene, int robot) {
+Arm armOf(const core::LoadedWorld& world, int robot) {
   Arm arm;
   arm.robot = robot;
   arm.placed = &(*world.robots)[static_cast<std::size_t>(robot)];
   arm.home = world.world->robots[static_cast<std::size_t>(robot)].home;
   const core::RobotModel& model = *arm.placed->model;
   for (int j = 0; j < 6; ++j) arm.max_velocity[j] = model.joints()[model.movableJoints()[j]].max_velocity;
-  arm.positions = scene.numPositions(robot);
   return arm;
 }
 
@@ -289,26 +288,32 @@ struct MotionBuilder {
 
   void grip(GripperAction action) { motion.grips.push_back({now(), action}); }
 
+  /// Key k as the collision checker takes it, with the fingers of piece i.
+  Eigen::VectorXd configuration(const CollisionScene& scene, std::size_t k, std::size_t i) const {
+    return scene.configuration(motion.robot, motion.keys[k].q, motion.finger[i]);
+  }
+  /// Piece i on the key curve the simulator follows through the keys so far (keyCurvePiece).
+  CurvePiece piece(const CollisionScene& scene, std::size_t i) const {
+    if (!curve_) curve_ = keyCurve(motion);
+    return keyCurvePiece(scene, motion, *curve_, i);
+  }
+
   const Arm* arm;
   const TransitionSettings* settings;
   TransitionMotion motion;
   std::vector<std::optional<RestingObject>> resting;  // per piece
 
  private:
+  mutable std::optional<controllers::TrajectoryInterpolator> curve_;
+
   void push(const ArmConfig& q_next, Millis duration, const Carry& carry) {
+    curve_.reset();
     motion.keys.push_back({now() + duration, q_next});
     motion.finger.push_back(carry.finger);
     motion.held.push_back(carry.held);
     resting.push_back(carry.resting);
   }
 };
-
-/// The collision checker's configuration: the arm, then both fingers at `finger`.
-Eigen::VectorXd fullConfiguration(const ArmConfig& q, double finger, int positions) {
-  Eigen::VectorXd full = Eigen::VectorXd::Constant(positions, finger);
-  for (int j = 0; j < 6; ++j) full[j] = q[j];
-  return full;
-}
 
 /// Shared by the sample builders: the inputs and the sampler's checker.
 struct Context {
@@ -320,9 +325,9 @@ struct Context {
 };
 
 /// How finely a motion is checked: at its keys (one configuration each: cheap, and where
-/// nearly every rejection already shows, keys being a centimetre apart), or along its pieces at
-/// the collision scene's motion step (both keys included). Samples are checked at the keys
-/// first, then along the pieces.
+/// nearly every rejection already shows, keys being a centimetre apart), or along its pieces on
+/// the key curve the simulator follows (key_curve.h) at the collision scene's motion step (both
+/// keys included). Samples are checked at the keys first, then along the pieces.
 enum class Check { kKeys, kPieces };
 
 /// Every piece free against the static scene and the robot itself with the piece's fingers and
@@ -332,11 +337,11 @@ bool staticFree(Context& c, const MotionBuilder& m, Check check) {
   for (std::size_t i = 0; i + 1 < motion.keys.size(); ++i) {
     std::vector<RestingObject> resting;
     if (m.resting[i]) resting.push_back(*m.resting[i]);
-    const Eigen::VectorXd a = fullConfiguration(motion.keys[i].q, motion.finger[i], m.arm->positions);
-    const Eigen::VectorXd b = fullConfiguration(motion.keys[i + 1].q, motion.finger[i], m.arm->positions);
-    const bool free = check == Check::kKeys ? c.checker.robotFree(motion.robot, a, resting, motion.held[i]) &&
-                                                  c.checker.robotFree(motion.robot, b, resting, motion.held[i])
-                                            : c.checker.motionFree(motion.robot, a, b, resting, motion.held[i]);
+    const auto keyFree = [&](std::size_t k) {
+      return c.checker.robotFree(motion.robot, m.configuration(c.scene, k, i), resting, motion.held[i]);
+    };
+    const bool free = check == Check::kKeys ? keyFree(i) && keyFree(i + 1)
+                                            : c.checker.motionFree(motion.robot, m.piece(c.scene, i), resting, motion.held[i]);
     if (!free) return false;
   }
   return true;
@@ -347,15 +352,15 @@ bool staticFree(Context& c, const MotionBuilder& m, Check check) {
 bool clearOf(Context& c, const MotionBuilder& moving, std::size_t first, std::size_t last, const Arm& still,
              const ArmConfig& q, double finger, const std::optional<HeldObject>& held, Check check) {
   const TransitionMotion& motion = moving.motion;
-  const Eigen::VectorXd q_still = fullConfiguration(q, finger, still.positions);
+  const StandingRobot other{still.robot, c.scene.configuration(still.robot, q, finger), held};
   for (std::size_t i = first; i < last; ++i) {
-    const Eigen::VectorXd a = fullConfiguration(motion.keys[i].q, motion.finger[i], moving.arm->positions);
-    const Eigen::VectorXd b = fullConfiguration(motion.keys[i + 1].q, motion.finger[i], moving.arm->positions);
-    const std::optional<HeldObject>& held_moving = motion.held[i];
-    const bool free = check == Check::kKeys
-                          ? c.checker.robotsFree(motion.robot, a, held_moving, still.robot, q_still, held) &&
-                                c.checker.robotsFree(motion.robot, b, held_moving, still.robot, q_still, held)
-                          : c.checker.motionsFree(motion.robot, a, b, held_moving, still.robot, q_still, q_still, held);
+    const auto keyFree = [&](std::size_t k) {
+      return c.checker.robotsFree(motion.robot, moving.configuration(c.scene, k, i), motion.held[i], other.robot, other.q,
+                                  other.held);
+    };
+    const bool free = check == Check::kKeys ? keyFree(i) && keyFree(i + 1)
+                                            : c.checker.motionClearOf(motion.robot, moving.piece(c.scene, i),
+                                                                      motion.held[i], std::span(&other, 1));
     if (!free) return false;
   }
   return true;
@@ -376,11 +381,9 @@ SiteSet touchedSites(Context& c, const std::vector<const MotionBuilder*>& motion
   for (const MotionBuilder* m : motions) {
     const TransitionMotion& motion = m->motion;
     for (std::size_t i = 0; i + 1 < motion.keys.size(); ++i) {
-      const Eigen::VectorXd a = fullConfiguration(motion.keys[i].q, motion.finger[i], m->arm->positions);
-      const Eigen::VectorXd b = fullConfiguration(motion.keys[i + 1].q, motion.finger[i], m->arm->positions);
       // the piece is free against the static scene and the robot itself (staticFree): each
       // site's check reduces to its object
-      const std::vector<char> hits = c.checker.motionObjectHits(motion.robot, a, b, others, motion.held[i]);
+      const std::vector<char> hits = c.checker.motionObjectHits(motion.robot, m->piece(c.scene, i), others, motion.held[i]);
       for (std::size_t s = 0; s < others.size(); ++s) {
         if (hits[s]) touches.set(other_sites[s]);
       }
@@ -583,7 +586,7 @@ std::optional<Giver> giverAt(Context& c, const Part& giver, const Vector3d& p_WO
   const Pose X_WT = part.X_WO * part.grasp.X_OT;
   return firstLine(*part.arm, X_WT, -c.settings.cartesian_distance * X_WT.linear().col(2), c.settings,
                    [&](const Line& retreat) -> std::optional<Giver> {
-                     const Eigen::VectorXd q = fullConfiguration(retreat.start, part.grasp.finger, part.arm->positions);
+                     const Eigen::VectorXd q = c.scene.configuration(part.arm->robot, retreat.start, part.grasp.finger);
                      if (!c.checker.robotFree(part.arm->robot, q, {}, heldIn(part, true))) return std::nullopt;
                      return Giver{part, retreat};
                    });
@@ -698,7 +701,7 @@ TransitionSampler::TransitionSampler(const core::LoadedWorld& world, const TaskS
 std::vector<TransitionSample> TransitionSampler::pick(int hyperarc) {
   const TransitionHyperarc& arc = hyperarcOf(*task_space_, hyperarc, TransitionKind::kPick);
   Context c{*world_->world, *scene_, *sites_, settings_, *checker_};
-  const Arm arm = armOf(*world_, *scene_, arc.robot);
+  const Arm arm = armOf(*world_, arc.robot);
   Part p{hyperarc, &arm, arc.object, sites_->start[static_cast<std::size_t>(arc.object)], Grasp{}};
   const Vector3d& size = c.world.objects[static_cast<std::size_t>(arc.object)].size;
   const Relabelled U = uprightFrame(p.X_WO.linear(), size);
@@ -716,7 +719,7 @@ std::vector<TransitionSample> TransitionSampler::place(int hyperarc, const Grasp
   const std::optional<Pose>& goal = sites_->goal[o];
   if (!goal) return {};  // no goal site: nothing to place into
   Context c{*world_->world, *scene_, *sites_, settings_, *checker_};
-  const Arm arm = armOf(*world_, *scene_, arc.robot);
+  const Arm arm = armOf(*world_, arc.robot);
   Part p{hyperarc, &arm, arc.object, *goal, held};
   const Pose& X_WR = c.world.regions[static_cast<std::size_t>(sites_->goal_region[o])].X_WR;
   const double region_yaw = std::atan2(X_WR.linear()(1, 0), X_WR.linear()(0, 0));
@@ -749,8 +752,8 @@ std::vector<TransitionSample> TransitionSampler::handoff(int hyperarc, const Gra
                                                          int count) {
   const TransitionHyperarc& arc = hyperarcOf(*task_space_, hyperarc, TransitionKind::kHandoff);
   Context c{*world_->world, *scene_, *sites_, settings_, *checker_};
-  const Arm giver_arm = armOf(*world_, *scene_, arc.robot);
-  const Arm receiver_arm = armOf(*world_, *scene_, arc.receiver);
+  const Arm giver_arm = armOf(*world_, arc.robot);
+  const Arm receiver_arm = armOf(*world_, arc.receiver);
   const Part giver{hyperarc, &giver_arm, arc.object, Pose::Identity(), giver_grasp};
   const Part receiver{hyperarc, &receiver_arm, arc.object, Pose::Identity(), Grasp{}};
   const std::vector<Grasp> grasps = handoffGrasps(arc.object, giver_grasp);

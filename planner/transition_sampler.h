@@ -21,11 +21,11 @@
 //          approach axis, then the receiver retreats. The receiver's grasp closes on a
 //          different face pair than the giver's, so the grippers do not collide.
 //
-// Every sample is checked with the collision checker: each configuration and each straight
-// piece between keys is free against the static scene and the robot itself (held object
-// included; the object being grasped or released counts as held but not against the static
-// scene while it touches its support); for handoffs, both robots against each other at every
-// key of the overlapping motion. Collisions with other objects resting at their start or goal
+// Every sample is checked with the collision checker along the curve the simulator follows
+// through its keys (key_curve.h): each piece between two keys is free against the static scene
+// and the robot itself (held object included; the object being grasped or released counts as
+// held but not against the static scene while it touches its support); for handoffs, each
+// robot's pieces against the other robot, which holds still while it moves. Collisions with other objects resting at their start or goal
 // sites do not reject a sample: they are recorded in `touches`, and the search schedules the
 // transition while those sites are empty.
 
@@ -58,7 +58,8 @@ struct Grasp {
 /// True when two grasps are the same to 1e-9 (rotation and translation).
 bool sameGrasp(const Grasp& a, const Grasp& b);
 
-/// One robot's part of a transition: straight joint-space pieces between timed keys.
+/// One robot's part of a transition: timed keys, which the simulator passes on a
+/// shape-preserving cubic (keyCurve, key_curve.h), each joint monotone between two keys.
 struct TransitionMotion {
   struct Key {
     Millis t = 0;           ///< from the transition's start

@@ -730,31 +730,63 @@ TEST_CASE("Motion steps bound every point's travel by the motion step", "[planne
   CHECK(dut.jointTravelRadius(0, 6) == 1.0);
 }
 
+/// The sorting world with a 1 cm x 1 mm x 1 cm plate that only the tip of robot 0's left
+/// finger passes through at `mid`, about halfway through a 1.75 rad turn of the base.
+struct PlateWorld {
+  PlateWorld() : world(withPlate(mid)), robots(world), scene(world, robots) {}
+
+  core::ArmConfig mid{};
+  core::World world;
+  core::RobotSet robots;
+  CollisionScene scene;
+
+ private:
+  static core::World withPlate(core::ArmConfig& mid) {
+    const auto& loaded = sortingWorld();
+    core::World world = *loaded.world;
+    mid = solveNearHome((*loaded.robots)[0], tcpDown({-0.30, 0.0, 0.95}));
+    core::FixtureSpec plate;
+    plate.name = "plate";
+    plate.type = core::FixtureType::kBox;
+    plate.X_WF = Pose::Identity();
+    plate.X_WF.translation() = Vector3d(-0.30 + 0.035, 0.0, 0.935);
+    plate.size = Vector3d(0.01, 0.001, 0.01);
+    world.fixtures.push_back(plate);
+    core::deriveFixtureGeometry(world);
+    return world;
+  }
+};
+
+const PlateWorld& plateWorld() {
+  static const PlateWorld plate;
+  return plate;
+}
+
+/// A staircase from `from` to `to`: first arm joint `first` moves, then every other position,
+/// each over half of s. Monotone in every position, speed twice the mean.
+planner::CurvePiece staircase(const VectorXd& from, const VectorXd& to, int first) {
+  planner::CurvePiece piece{from, to, {}, 2.0};
+  piece.at = [from, to, first](double s, VectorXd& q) {
+    q = from;
+    q[first] += std::min(2 * s, 1.0) * (to[first] - from[first]);
+    for (int j = 0; j < q.size(); ++j) {
+      if (j != first) q[j] += std::max(2 * s - 1, 0.0) * (to[j] - from[j]);
+    }
+  };
+  return piece;
+}
+
 TEST_CASE("motionFree detects a thin obstacle crossed mid-motion", "[planner][collision]") {
-  const auto& loaded = sortingWorld();
-  core::World world = *loaded.world;
-  // a 1 cm x 1 mm x 1 cm plate that only the tip of the left finger passes through, about
-  // halfway through a 1.75 rad turn of the base
-  const core::ArmConfig mid = solveNearHome((*loaded.robots)[0], tcpDown({-0.30, 0.0, 0.95}));
-  core::ArmConfig from = mid;
-  core::ArmConfig to = mid;
+  const PlateWorld& plate = plateWorld();
+  CollisionChecker dut(plate.scene);
+  core::ArmConfig from = plate.mid;
+  core::ArmConfig to = plate.mid;
   from[0] -= 1.0;
   to[0] += 0.75;
-  core::FixtureSpec plate;
-  plate.name = "plate";
-  plate.type = core::FixtureType::kBox;
-  plate.X_WF = Pose::Identity();
-  plate.X_WF.translation() = Vector3d(-0.30 + 0.035, 0.0, 0.935);
-  plate.size = Vector3d(0.01, 0.001, 0.01);
-  world.fixtures.push_back(plate);
-  core::deriveFixtureGeometry(world);
-  const core::RobotSet robots(world);
-  const CollisionScene scene(world, robots);
-  CollisionChecker dut(scene);
 
   const VectorXd q_from = fullQ(from, 0.025);
   const VectorXd q_to = fullQ(to, 0.025);
-  const VectorXd q_mid = fullQ(mid, 0.025);
+  const VectorXd q_mid = fullQ(plate.mid, 0.025);
   REQUIRE(dut.robotFree(0, q_from, {}));
   REQUIRE(dut.robotFree(0, q_to, {}));
   REQUIRE_FALSE(dut.robotFree(0, q_mid, {}));
@@ -771,6 +803,92 @@ TEST_CASE("motionFree detects a thin obstacle crossed mid-motion", "[planner][co
   // without the plate the whole motion is free
   CollisionChecker plain(sortingScene());
   CHECK(plain.motionFree(0, q_from, q_to, {}));
+}
+
+TEST_CASE("A curved motion is checked along its curve at its peak speed's samples", "[planner][collision]") {
+  const PlateWorld& plate = plateWorld();
+  CollisionChecker dut(plate.scene);
+  // the base turns past the plate while the shoulder lifts the gripper 2-3 cm over it
+  core::ArmConfig from = plate.mid;
+  core::ArmConfig to = plate.mid;
+  from[0] -= 1.0;
+  to[0] += 0.75;
+  to[1] -= 0.05;
+  const VectorXd q_from = fullQ(from, 0.025);
+  const VectorXd q_to = fullQ(to, 0.025);
+  REQUIRE(dut.motionFree(0, q_from, q_to, {}));
+  // turning first, at the plate's height, hits it; lifting first clears it
+  const planner::CurvePiece turn_first = staircase(q_from, q_to, 0);
+  const planner::CurvePiece lift_first = staircase(q_from, q_to, 1);
+  CHECK_FALSE(dut.motionFree(0, turn_first, {}));
+  dut.resetCounters();
+  CHECK(dut.motionFree(0, lift_first, {}));
+  // at twice the straight line's samples: every step within the motion step
+  const double travel = plate.scene.motionTravel(0, q_from, q_to);
+  const auto n = static_cast<std::uint64_t>(std::ceil(2 * travel / plate.scene.settings().motion_step - 1e-9));
+  CHECK(dut.counters().configurations == n + 1);
+  CHECK(n + 1 > 2 * static_cast<std::uint64_t>(plate.scene.motionSteps(0, q_from, q_to)) - 2);
+  // a curve must say how fast it peaks
+  planner::CurvePiece bad = lift_first;
+  bad.peak_over_mean = 0.5;
+  CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
+  bad.at = nullptr;
+  bad.peak_over_mean = 2.0;
+  CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
+}
+
+TEST_CASE("Curve queries agree with the single-configuration checks at the curve's samples", "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const core::RobotSet& robots = *loaded.robots;
+  const CollisionScene& scene = sortingScene();
+  CollisionChecker dut(scene);
+  const std::vector<RestingObject> objects = planner::startPlacement(world);
+  const std::vector<planner::StandingRobot> standing{
+      {1, homeQ(world, 1), std::nullopt}, {1, fullQ(solveNearHome(robots[1], tcpDown({0.035, 0.0, 0.95})), 0.025), std::nullopt}};
+  RandomQueries random(11);
+  int hits = 0, clashes = 0, free = 0;
+  for (int trial = 0; trial < 40; ++trial) {
+    const VectorXd a = random.towardsCentre(robots[0]);
+    VectorXd b = a;
+    for (int j = 0; j < 6; ++j) b[j] += random.uniform(-0.4, 0.4);
+    // every other motion ends with the open gripper down at a cube
+    const RestingObject& cube = objects[static_cast<std::size_t>(trial / 2) % objects.size()];
+    const auto down = robots[0].solveInWorld(tcpDown(cube.X_WO.translation() + Vector3d(0, 0, 0.01)), robots[0].spec->home);
+    if (trial % 2 == 1 && !down.empty()) b = fullQ(down.front(), 0.025);
+    const planner::CurvePiece piece = staircase(a, b, trial % 6);
+    const int n = static_cast<int>(std::ceil(2 * scene.motionTravel(0, a, b) / scene.settings().motion_step - 1e-9));
+    std::vector<VectorXd> samples;
+    for (int k = 0; k <= n; ++k) {
+      samples.emplace_back();
+      piece.at(static_cast<double>(k) / n, samples.back());
+    }
+    const auto all = [&](const auto& free_at) { return std::all_of(samples.begin(), samples.end(), free_at); };
+    const bool expected_free = all([&](const VectorXd& q) { return dut.robotFree(0, q, objects); });
+    CHECK(dut.motionFree(0, piece, objects) == expected_free);
+    if (all([&](const VectorXd& q) { return dut.robotFree(0, q, {}); })) {
+      const std::vector<char> object_hits = dut.motionObjectHits(0, piece, objects);
+      for (std::size_t k = 0; k < objects.size(); ++k) {
+        const bool expected = !all([&](const VectorXd& q) { return dut.robotFree(0, q, std::span(&objects[k], 1)); });
+        CHECK(static_cast<bool>(object_hits[k]) == expected);
+        hits += expected;
+      }
+    }
+    const bool expected_clear = all([&](const VectorXd& q) {
+      return std::all_of(standing.begin(), standing.end(), [&](const planner::StandingRobot& o) {
+        return dut.robotsFree(0, q, std::nullopt, o.robot, o.q, o.held);
+      });
+    });
+    CHECK(dut.motionClearOf(0, piece, std::nullopt, standing) == expected_clear);
+    clashes += !expected_clear;
+    free += expected_free;
+  }
+  // the trials cover both answers of each query
+  CHECK(hits > 0);
+  CHECK(clashes > 0);
+  CHECK(clashes < 40);
+  CHECK(free > 0);
+  CHECK(free < 40);
 }
 
 TEST_CASE("timedPathsFree checks two robots at common times", "[planner][collision]") {

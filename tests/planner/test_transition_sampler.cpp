@@ -11,6 +11,7 @@
 #include <utility>
 #include <vector>
 
+#include "controllers/trajectory_interpolator.h"
 #include "core/world_loader.h"
 #include "planner/transition_sampler.h"
 
@@ -87,6 +88,39 @@ void requireSamePose(const Pose& a, const Pose& b) {
   REQUIRE(angle < 1e-6);
 }
 
+/// The curve the simulator follows through a motion's keys: the plan gives no velocities, so
+/// the interpolator rests at the ends and passes the other keys shape-preserving.
+controllers::TrajectoryInterpolator simulatedCurve(const TransitionMotion& motion) {
+  std::vector<core::TrajectoryPoint> points;
+  for (const TransitionMotion::Key& key : motion.keys) points.push_back({planner::toSeconds(key.t), key.q, std::nullopt});
+  return controllers::TrajectoryInterpolator(points);
+}
+
+/// Whether `free(q)` holds all along piece i of the motion on that curve, with the fingers at
+/// `finger`: checked at three times the straight piece's motion steps, a monotone cubic's speed
+/// peaking at no more than three times its mean.
+template <class Free>
+bool freeAlongCurve(const Setup& s, const TransitionMotion& motion, const controllers::TrajectoryInterpolator& curve,
+                    std::size_t i, double finger, const Free& free) {
+  const TransitionMotion::Key& a = motion.keys[i];
+  const TransitionMotion::Key& b = motion.keys[i + 1];
+  const int n = 3 * s.scene.motionSteps(motion.robot, full(a.q, finger), full(b.q, finger), motion.held[i]);
+  const double t0 = planner::toSeconds(a.t), t1 = planner::toSeconds(b.t);
+  for (int k = 0; k <= n; ++k) {
+    if (!free(full(curve.at(k == n ? t1 : t0 + (t1 - t0) * k / n).q, finger))) return false;
+  }
+  return true;
+}
+
+/// Piece i on the curve free against the static scene, the robot itself and `objects`.
+bool curvePieceFree(const Setup& s, CollisionChecker& checker, const TransitionMotion& motion,
+                    const controllers::TrajectoryInterpolator& curve, std::size_t i, double finger,
+                    std::span<const planner::RestingObject> objects) {
+  return freeAlongCurve(s, motion, curve, i, finger, [&](const VectorXd& q) {
+    return checker.robotFree(motion.robot, q, objects, motion.held[i]);
+  });
+}
+
 /// The index of the key at time t (a gripper command's key).
 std::size_t keyAt(const TransitionMotion& motion, Millis t) {
   const auto it =
@@ -129,6 +163,7 @@ void checkMotion(const Setup& s, const TransitionSample& sample, const Transitio
       REQUIRE(key.q[j] <= robot.ik->upper()[j]);
     }
   }
+  const controllers::TrajectoryInterpolator curve = simulatedCurve(motion);
   for (std::size_t i = 0; i + 1 < motion.keys.size(); ++i) {
     const TransitionMotion::Key& a = motion.keys[i];
     const TransitionMotion::Key& b = motion.keys[i + 1];
@@ -143,7 +178,7 @@ void checkMotion(const Setup& s, const TransitionSample& sample, const Transitio
     REQUIRE((finger == 0.025 || (motion.held[i] && motion.held[i]->object == sample.object)));
     REQUIRE(checker.robotFree(motion.robot, full(a.q, finger), {}, motion.held[i]));
     REQUIRE(checker.robotFree(motion.robot, full(b.q, finger), {}, motion.held[i]));
-    REQUIRE(checker.motionFree(motion.robot, full(a.q, finger), full(b.q, finger), {}, motion.held[i]));
+    REQUIRE(curvePieceFree(s, checker, motion, curve, i, finger, {}));
   }
 }
 
@@ -233,8 +268,9 @@ void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
     // the retreat ends where the approach started; the robot cleared the resting object
     REQUIRE(m.keys.back().q == m.keys.front().q);
     const planner::RestingObject placed{sample.object, sample.X_WO};
+    const controllers::TrajectoryInterpolator curve = simulatedCurve(m);
     for (std::size_t i = release_key; i + 1 < m.keys.size(); ++i) {
-      REQUIRE(checker.motionFree(m.robot, full(m.keys[i].q, open), full(m.keys[i + 1].q, open), std::span(&placed, 1)));
+      REQUIRE(curvePieceFree(s, checker, m, curve, i, open, std::span(&placed, 1)));
     }
     REQUIRE(sample.action_end == sample.duration);
   } else {
@@ -274,20 +310,25 @@ void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
       REQUIRE(r.finger[i] == (i < grasp_key ? open : sample.grasp_after->finger));
       if (i >= grasp_key) REQUIRE(holds(r.held[i], sample.object, *sample.grasp_after));
     }
-    // the grippers never touch: every key of the receiver's approach against the giver holding
-    // still, every key of the giver's retreat against the receiver holding the object
+    // the grippers never touch: the receiver's approach against the giver holding still, the
+    // giver's retreat against the receiver holding the object, all along the simulator's curves
     const std::optional<HeldObject> held_g = g.held.front();
     REQUIRE(holds(held_g, sample.object, *sample.grasp_before));
     const std::optional<HeldObject> held_r = r.held[grasp_key];
     REQUIRE(holds(held_r, sample.object, *sample.grasp_after));
     const VectorXd q_giver = full(g.keys[0].q, sample.grasp_before->finger);
-    for (std::size_t k = 0; k <= grasp_key; ++k) {
-      const std::size_t piece = std::min(k, grasp_key - 1);
-      REQUIRE(checker.robotsFree(r.robot, full(r.keys[k].q, r.finger[piece]), r.held[piece], g.robot, q_giver, held_g));
+    const controllers::TrajectoryInterpolator r_curve = simulatedCurve(r);
+    for (std::size_t i = 0; i < grasp_key; ++i) {
+      REQUIRE(freeAlongCurve(s, r, r_curve, i, r.finger[i], [&](const VectorXd& q) {
+        return checker.robotsFree(r.robot, q, r.held[i], g.robot, q_giver, held_g);
+      }));
     }
     const VectorXd q_receiver = full(r.keys[grasp_key].q, sample.grasp_after->finger);
-    for (std::size_t k = retreat_key; k < g.keys.size(); ++k) {
-      REQUIRE(checker.robotsFree(g.robot, full(g.keys[k].q, open), std::nullopt, r.robot, q_receiver, held_r));
+    const controllers::TrajectoryInterpolator g_curve = simulatedCurve(g);
+    for (std::size_t i = retreat_key; i + 1 < g.keys.size(); ++i) {
+      REQUIRE(freeAlongCurve(s, g, g_curve, i, open, [&](const VectorXd& q) {
+        return checker.robotsFree(g.robot, q, std::nullopt, r.robot, q_receiver, held_r);
+      }));
     }
   }
 }
