@@ -269,8 +269,7 @@ std::pair<int, double> CollisionChecker::motionSamples(int robot, const detail::
   if (motion.curve != nullptr && !motion.curve->at) throw std::invalid_argument("collision check: a curve needs at(s, q)");
   // validates the ends and the held object
   const double travel = peak * scene_->motionTravel(robot, motion.from, motion.to, held);
-  const double steps = std::ceil(travel / scene_->settings().motion_step - 1e-9);
-  const int n = std::max(1, static_cast<int>(std::min(steps, 1e9)));
+  const int n = detail::stepsFor(travel, scene_->settings().motion_step);
   return {n, travel / n};
 }
 

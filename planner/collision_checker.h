@@ -56,6 +56,7 @@
 
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <memory>
 #include <optional>
 #include <span>
@@ -119,17 +120,19 @@ struct TimedPath {
 };
 
 /// A curved motion of one robot from `from` to `to` (all model positions, arm then fingers):
-/// at(s, q) writes its configuration at s in [0, 1], from at 0 and to at 1. The checks rely on
-/// two properties of the curve: each position is monotone in s, so no point travels farther
-/// than along the straight line between the ends; and no position moves faster in s than
-/// peak_over_mean times its mean rate |to - from|, so peak_over_mean times as many samples as
-/// the straight line's keep every step within the motion step. A transition's key curve
-/// between two keys (controllers::TrajectoryInterpolator, planner/key_curve.h) has both.
+/// at(s, q) sets q to its configuration at s in [0, 1], from at 0 and to at 1. The checks rely
+/// on one property of the curve: no position moves faster in s than peak_over_mean times its
+/// mean rate |to - from|. Then no point travels more than peak_over_mean times the straight
+/// line's bound sum_j R_j |to_j - from_j|, and peak_over_mean times as many samples as the
+/// straight line's keep every step within the motion step. A transition's key curve between
+/// two keys (controllers::TrajectoryInterpolator, planner/key_curve.h) is monotone in every
+/// position, its peak_over_mean at most 3.
 struct CurvePiece {
   Eigen::VectorXd from;
   Eigen::VectorXd to;
   std::function<void(double s, Eigen::VectorXd& q)> at;
-  double peak_over_mean = 1.0;  ///< >= 1
+  /// Must be set: at least 1 (the default, NaN, is refused).
+  double peak_over_mean = std::numeric_limits<double>::quiet_NaN();
 };
 
 /// A self-collision body pair the checker never tests, and why.

@@ -2,13 +2,14 @@
 // The scratch state of collision queries (CollisionChecker, collision_checker.h), internal to
 // the planner: a robot's body poses by forward kinematics, its shapes placed lazily, and the
 // checks of one configuration (against the static scene, itself, resting objects, another
-// robot) and of straight motions. One per checker, and one while a scene is built.
+// robot) and of motions (straight or curved). One per checker, and one while a scene is built.
 
 #include <array>
 #include <cstdint>
 #include <limits>
 #include <optional>
 #include <span>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -107,6 +108,7 @@ struct MotionRef {
   void at(double s, Eigen::VectorXd& q) const {
     if (curve != nullptr) {
       curve->at(s, q);
+      if (q.size() != from.size()) throw std::invalid_argument("collision check: a curve's at(s, q) gave a q of the wrong size");
       return;
     }
     q.resize(from.size());

@@ -486,9 +486,7 @@ double CollisionScene::jointTravelRadius(int robot, int q_index) const {
 
 int CollisionScene::motionSteps(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,
                                 const std::optional<HeldObject>& held) const {
-  const double travel = motionTravel(robot, q_from, q_to, held);
-  const double steps = std::ceil(travel / data_->settings.motion_step - 1e-9);
-  return std::max(1, static_cast<int>(std::min(steps, 1e9)));
+  return detail::stepsFor(motionTravel(robot, q_from, q_to, held), data_->settings.motion_step);
 }
 
 double CollisionScene::motionTravel(int robot, const Eigen::VectorXd& q_from, const Eigen::VectorXd& q_to,

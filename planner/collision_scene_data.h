@@ -4,6 +4,8 @@
 // collision_scene.cpp builds it; the queries (collision_checker_state.h,
 // collision_checker.cpp) read it.
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <optional>
 #include <span>
@@ -133,5 +135,12 @@ const RobotData& requireRobot(const SceneData& scene, int robot);
 void requireConfiguration(const RobotData& robot, const Eigen::VectorXd& q, const char* what);
 void requireObjects(const SceneData& scene, std::span<const RestingObject> objects);
 void requireHeld(const SceneData& scene, const std::optional<HeldObject>& held);
+
+/// Intervals a motion whose points travel at most `travel` [m] is split into so that none
+/// travels more than `step` between samples (>= 1).
+inline int stepsFor(double travel, double step) {
+  const double steps = std::ceil(travel / step - 1e-9);
+  return std::max(1, static_cast<int>(std::min(steps, 1e9)));
+}
 
 }  // namespace dashbed::planner::detail

@@ -116,7 +116,11 @@ struct TransitionSettings {
   /// Length of a horizontal approach [m]: long enough to start outside a shelf compartment
   /// (a back slot lies 0.22 m inside the generated shelf), where roadmap moves can reach.
   double slide_distance = 0.25;
-  double peak_factor = 1.5;          ///< peak / average joint speed of the simulator's cubic Hermite
+  /// Each piece is timed for a joint peak of peak_factor x its average within speed_fraction
+  /// of the limit. The simulator's cubic through the keys peaks at up to 3 x the average
+  /// (curvePeakOverMean, key_curve.h; 4/3 out of rest, about 1 while cruising), so the joints
+  /// stay within speed_fraction x 3 / peak_factor of their limits: 1.0 at the defaults.
+  double peak_factor = 1.5;
   double max_step_jump = 0.3;        ///< largest joint change between keys of a line [rad]
   double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
   core::HandoffShape handoff;        ///< where handoff poses are drawn (core::handoffZone)

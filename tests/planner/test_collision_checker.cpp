@@ -828,12 +828,17 @@ TEST_CASE("A curved motion is checked along its curve at its peak speed's sample
   const auto n = static_cast<std::uint64_t>(std::ceil(2 * travel / plate.scene.settings().motion_step - 1e-9));
   CHECK(dut.counters().configurations == n + 1);
   CHECK(n + 1 > 2 * static_cast<std::uint64_t>(plate.scene.motionSteps(0, q_from, q_to)) - 2);
-  // a curve must say how fast it peaks
+  // a curve whose peak bound is unset or below 1, or that gives configurations of the wrong
+  // size, is refused
   planner::CurvePiece bad = lift_first;
   bad.peak_over_mean = 0.5;
   CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
-  bad.at = nullptr;
+  bad.peak_over_mean = planner::CurvePiece{}.peak_over_mean;
+  CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
   bad.peak_over_mean = 2.0;
+  bad.at = [](double, VectorXd& q) { q = VectorXd::Zero(6); };
+  CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
+  bad.at = nullptr;
   CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
 }
 
