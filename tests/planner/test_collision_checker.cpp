@@ -731,14 +731,19 @@ TEST_CASE("Motion steps bound every point's travel by the motion step", "[planne
 }
 
 /// The sorting world with a 1 cm x 1 mm x 1 cm plate that only the tip of robot 0's left
-/// finger passes through at `mid`, about halfway through a 1.75 rad turn of the base.
+/// finger passes through at `mid`, about halfway through a 1.75 rad turn of the base from
+/// `before` to `after`.
 struct PlateWorld {
-  PlateWorld() : world(withPlate(mid)), robots(world), scene(world, robots) {}
+  PlateWorld() : world(withPlate(mid)), robots(world), scene(world, robots), before(mid), after(mid) {
+    before[0] -= 1.0;
+    after[0] += 0.75;
+  }
 
   core::ArmConfig mid{};
   core::World world;
   core::RobotSet robots;
   CollisionScene scene;
+  core::ArmConfig before, after;
 
  private:
   static core::World withPlate(core::ArmConfig& mid) {
@@ -779,11 +784,8 @@ planner::CurvePiece staircase(const VectorXd& from, const VectorXd& to, int firs
 TEST_CASE("motionFree detects a thin obstacle crossed mid-motion", "[planner][collision]") {
   const PlateWorld& plate = plateWorld();
   CollisionChecker dut(plate.scene);
-  core::ArmConfig from = plate.mid;
-  core::ArmConfig to = plate.mid;
-  from[0] -= 1.0;
-  to[0] += 0.75;
-
+  const core::ArmConfig& from = plate.before;
+  const core::ArmConfig& to = plate.after;
   const VectorXd q_from = fullQ(from, 0.025);
   const VectorXd q_to = fullQ(to, 0.025);
   const VectorXd q_mid = fullQ(plate.mid, 0.025);
@@ -809,10 +811,8 @@ TEST_CASE("A curved motion is checked along its curve at its peak speed's sample
   const PlateWorld& plate = plateWorld();
   CollisionChecker dut(plate.scene);
   // the base turns past the plate while the shoulder lifts the gripper 2-3 cm over it
-  core::ArmConfig from = plate.mid;
-  core::ArmConfig to = plate.mid;
-  from[0] -= 1.0;
-  to[0] += 0.75;
+  const core::ArmConfig& from = plate.before;
+  core::ArmConfig to = plate.after;
   to[1] -= 0.05;
   const VectorXd q_from = fullQ(from, 0.025);
   const VectorXd q_to = fullQ(to, 0.025);
