@@ -49,6 +49,14 @@ bool SiteSet::intersects(const SiteSet& other) const {
   return false;
 }
 
+bool SiteSet::subsetOf(const SiteSet& other) const {
+  if (bits_.size() != other.bits_.size()) throw std::invalid_argument("site set: subsetOf a set of other sites");
+  for (std::size_t i = 0; i < bits_.size(); ++i) {
+    if (bits_[i] & ~other.bits_[i]) return false;
+  }
+  return true;
+}
+
 bool SiteSet::none() const {
   return std::all_of(bits_.begin(), bits_.end(), [](std::uint64_t word) { return word == 0; });
 }

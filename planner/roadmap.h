@@ -42,6 +42,8 @@ class SiteSet {
   void set(int site, bool on = true);
   bool test(int site) const;
   bool intersects(const SiteSet& other) const;
+  /// Every site of this set is in `other` (sets of the same sites).
+  bool subsetOf(const SiteSet& other) const;
   bool none() const;
   bool operator==(const SiteSet&) const = default;
 

@@ -434,14 +434,13 @@ Pose backedOff(const Pose& X_WT, double distance) { return shifted(X_WT, -distan
 // ---- pick ------------------------------------------------------------------------------------
 
 /// Along the approach `in` (the object counts as held, not against the static scene, once the
-/// open fingers surround it), close, dwell, lift straight up.
-std::optional<TransitionSample> pickAlong(Context& c, const Part& p, const Line& in) {
+/// open fingers surround it: the last `surround` of the line), close, dwell, lift straight up.
+std::optional<TransitionSample> pickAlong(Context& c, const Part& p, const Line& in, double surround) {
   const TransitionSettings& s = c.settings;
   const double d = s.cartesian_distance;
   const auto lift = straightLine(*p.arm, p.X_WO * p.grasp.X_OT, in.keys.back(), d * kUp, s);
   if (!lift) return std::nullopt;
 
-  const double surround = surroundDistance(c.world.objects[static_cast<std::size_t>(p.object)].size, p.grasp);
   MotionBuilder m(*p.arm, in.start, s);
   const auto n_in = static_cast<double>(in.keys.size());
   for (std::size_t k = 0; k < in.keys.size(); ++k) {
@@ -467,12 +466,27 @@ std::optional<TransitionSample> pickAlong(Context& c, const Part& p, const Line&
   return sample;
 }
 
-/// Pre-grasp back along the grasp's approach axis, straight approach, close, dwell, lift.
+/// Pre-grasp back along the grasp's approach axis, straight approach, close, dwell, lift. A side
+/// grasp (horizontal approach) may instead come straight down from above, its open fingers
+/// passing on either side of the item: coming in sideways, the gripper and wrist sweep the table
+/// beside the item at its height, where the items next to it stand; from above they pass over
+/// them. The one from above is taken where it touches fewer sites (a strict subset), or where
+/// the sideways approach has no sample.
 std::optional<TransitionSample> pickSample(Context& c, const Part& p) {
   const Pose X_WT = p.X_WO * p.grasp.X_OT;
+  const Vector3d approach = X_WT.linear().col(2);
   const double d = c.settings.cartesian_distance;
-  return firstLine(*p.arm, backedOff(X_WT, d), d * X_WT.linear().col(2), c.settings,
-                   [&](const Line& in) { return pickAlong(c, p, in); });
+  const double surround = surroundDistance(c.world.objects[static_cast<std::size_t>(p.object)].size, p.grasp);
+  std::optional<TransitionSample> sideways = firstLine(*p.arm, backedOff(X_WT, d), d * approach, c.settings,
+                                                       [&](const Line& in) { return pickAlong(c, p, in, surround); });
+  if (std::abs(approach.z()) > kAxisTolerance || (sideways && sideways->touches.none())) return sideways;
+  // from above the item counts as resting, and is checked against the fingers, all the way down
+  std::optional<TransitionSample> above = firstLine(*p.arm, shifted(X_WT, d * kUp), -d * kUp, c.settings,
+                                                    [&](const Line& in) { return pickAlong(c, p, in, 0.0); });
+  if (above && (!sideways || (above->touches.subsetOf(sideways->touches) && !(above->touches == sideways->touches)))) {
+    return above;
+  }
+  return sideways;
 }
 
 // ---- place -----------------------------------------------------------------------------------

@@ -8,7 +8,11 @@
 //          straight up. Grasps: core::boxGrasps of the object as it rests (from above and,
 //          where the gripper body clears the surface, from the side); on an object at least
 //          two fingertips long across the closing axis also shifted to either end, so that two
-//          grippers fit side by side in a later handoff.
+//          grippers fit side by side in a later handoff. A side grasp is instead approached
+//          straight down from above, the open fingers passing on either side of the item, where
+//          that touches fewer other objects' sites than coming in sideways (items standing close
+//          together, whose neighbours a sideways approach sweeps over at their height) or where
+//          coming in sideways has no sample.
 //  place   the robot starts holding the object cartesian_distance back along its approach axis
 //          from the goal placement (above it for a vertical approach, in front of it for a
 //          horizontal one: shelves), moves in, opens, dwells, retreats the same way. The object
@@ -133,7 +137,8 @@ class TransitionSampler {
                     const CollisionScene& scene, const ObjectSites& sites, const TransitionSettings& settings = {});
 
   /// Pick samples of pick hyperarc `hyperarc` (object at its start site): one per grasp that
-  /// passes the checks, IK solution nearest the robot's home configuration. Deterministic.
+  /// passes the checks, IK solution nearest the robot's home configuration (a side grasp from
+  /// above where that touches fewer sites). Deterministic.
   std::vector<TransitionSample> pick(int hyperarc);
 
   /// Place samples of place hyperarc `hyperarc` (object into its goal site) for a robot holding

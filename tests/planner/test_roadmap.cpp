@@ -291,7 +291,14 @@ TEST_CASE("Site sets", "[planner][roadmap]") {
   b.set(65);
   CHECK(a.intersects(b));
   CHECK(a == b);
+  CHECK(a.subsetOf(b));
+  b.set(3);
+  CHECK(a.subsetOf(b));
+  CHECK_FALSE(b.subsetOf(a));
+  CHECK(SiteSet(70).subsetOf(a));
+  CHECK_THROWS_AS(a.subsetOf(SiteSet(200)), std::invalid_argument);
   b.set(65, false);
+  b.set(3, false);
   CHECK(b.none());
   CHECK_THROWS_AS(b.set(128), std::out_of_range);
 }

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "controllers/trajectory_interpolator.h"
+#include "core/world_io.h"
 #include "core/world_loader.h"
 #include "planner/transition_sampler.h"
 
@@ -36,8 +37,9 @@ namespace {
 
 /// A world with everything the sampler reads, built once per world file.
 struct Setup {
-  explicit Setup(const std::string& world)
-      : loaded(core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + world)),
+  explicit Setup(const std::string& world) : Setup(core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + world)) {}
+  explicit Setup(core::LoadedWorld world)
+      : loaded(std::move(world)),
         task_space(TaskSpaceHypergraph::fromWorld(*loaded.world, *loaded.robots, loaded.reach)),
         scene(*loaded.world, *loaded.robots),
         sites(planner::objectSites(loaded)) {}
@@ -182,6 +184,22 @@ void checkMotion(const Setup& s, const TransitionSample& sample, const Transitio
   }
 }
 
+/// Where a pick's approach starts, from the TCP at its grasp [m, world].
+Vector3d pickApproach(const Setup& s, const TransitionSample& pick) {
+  const TransitionMotion& m = pick.motions.front();
+  const Pose X_WT = pick.X_WO * pick.grasp_after->X_OT;
+  return (*s.loaded.robots)[static_cast<std::size_t>(m.robot)].tcpPoseInWorld(m.keys.front().q).translation() -
+         X_WT.translation();
+}
+
+/// A pick whose open gripper comes straight down into a side grasp.
+bool pickedFromAbove(const Setup& s, const TransitionSample& pick) {
+  const TransitionSettings settings;
+  const Pose X_WT = pick.X_WO * pick.grasp_after->X_OT;
+  return std::abs(X_WT.linear()(2, 2)) < 1e-6 &&
+         (pickApproach(s, pick) - settings.cartesian_distance * Vector3d::UnitZ()).norm() < 1e-6;
+}
+
 /// Every property of a sample the sampler promises (transition_sampler.h).
 void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
   CollisionChecker checker(s.scene);
@@ -221,7 +239,11 @@ void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
     REQUIRE(m.grips.size() == 1);
     REQUIRE(m.grips.front().second == core::GripperAction::kClose);
     const std::size_t grasp_key = keyAt(m, m.grips.front().first);
-    requireSamePose(tcp(m, grasp_key), sample.X_WO * sample.grasp_after->X_OT);
+    const Pose X_WT = sample.X_WO * sample.grasp_after->X_OT;
+    requireSamePose(tcp(m, grasp_key), X_WT);
+    // in along the grasp's approach axis, or into a side grasp from straight above
+    const Vector3d back = -settings.cartesian_distance * X_WT.linear().col(2);
+    REQUIRE(((pickApproach(s, sample) - back).norm() < 1e-6 || pickedFromAbove(s, sample)));
     // open fingers up to the grasp, closed on the object after it; the dwell, then the lift
     for (std::size_t i = 0; i < m.finger.size(); ++i) {
       if (i < grasp_key) {
@@ -499,6 +521,47 @@ TEST_CASE("Shelf slots are filled by pushing side-grasped items in horizontally"
     REQUIRE(placed > 0);
   }
   REQUIRE(back_places > 0);
+}
+
+TEST_CASE("A side-grasped item among others is picked from above, alone from the side", "[planner][transition]") {
+  // r1 can only take green_1 from its +y side, where coming in sideways its wrist passes over
+  // green_3 standing 0.36 m away
+  const std::string file = "../tests/planner/worlds/shelf_items_side_by_side.yaml";
+  const Setup& crowded = world(file);
+  core::World alone_world = core::loadWorldFile(std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + file);
+  std::erase_if(alone_world.objects, [](const core::ObjectSpec& o) { return o.name != "green_1"; });
+  std::erase_if(alone_world.goals, [](const core::Goal& g) { return g.object != "green_1"; });
+  const Setup alone(core::validateWorld(std::move(alone_world)));
+
+  // the grasps each robot picks an object in, from above or sideways
+  struct Picks {
+    std::vector<std::pair<int, Grasp>> above, sideways;
+  };
+  const auto picksOf = [](const Setup& s, const std::string& object) {
+    TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
+    Picks picks;
+    for (const int h : s.hyperarcs(TransitionKind::kPick)) {
+      for (const TransitionSample& sample : sampler.pick(h)) {
+        checkSample(s, sample, h);
+        const bool above = pickedFromAbove(s, sample);
+        if (s.loaded.world->objects[static_cast<std::size_t>(sample.object)].name != object) continue;
+        (above ? picks.above : picks.sideways).emplace_back(sample.motions.front().robot, *sample.grasp_after);
+      }
+    }
+    return picks;
+  };
+  const Picks crowded_picks = picksOf(crowded, "green_1");
+  const Picks alone_picks = picksOf(alone, "green_1");
+  // a grasp is taken one way, never both; some taken from above among the others are taken
+  // sideways alone, with nothing to pass over
+  int switched = 0;
+  for (const auto& [robot, grasp] : crowded_picks.above) {
+    const auto same = [&](const auto& other) { return other.first == robot && planner::sameGrasp(other.second, grasp); };
+    switched += std::any_of(alone_picks.sideways.begin(), alone_picks.sideways.end(), same);
+    REQUIRE(std::none_of(crowded_picks.sideways.begin(), crowded_picks.sideways.end(), same));
+  }
+  REQUIRE(switched > 0);
+  REQUIRE(alone_picks.above.size() < crowded_picks.above.size());
 }
 
 TEST_CASE("A bar goes into a bin turned by 45 degrees along its goal slot's axes", "[planner][transition]") {
