@@ -44,6 +44,43 @@ std::string describeTransition(const MotionHypergraph& graph, int id) {
          " (transition " + std::to_string(id) + ")";
 }
 
+/// "; every pick of green_3 passes over blue_0 and blue_3 at their starts": the objects with a
+/// goal that no robot picks without touching some other objects still at their start sites,
+/// and those objects (at most `limit` objects). Nothing is set down anywhere but at its goal,
+/// so such a pick waits until the others have been picked up; where those must wait for it in
+/// turn (a front slot for its back one), no task plan may exist.
+std::string crowdedPicks(MotionHypergraph& graph, std::size_t limit) {
+  const TaskSpaceHypergraph& task_space = graph.taskSpace();
+  const core::World& world = *graph.world().world;
+  std::vector<std::string> lines;
+  for (int o = 0; o < task_space.numObjects(); ++o) {
+    if (!graph.sites().goal[static_cast<std::size_t>(o)]) continue;
+    std::vector<const TransitionSample*> picks;
+    for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
+      const TransitionHyperarc& arc = task_space.hyperarcs()[h];
+      if (arc.object != o || arc.kind != TransitionKind::kPick) continue;
+      for (const int id : graph.transitionsOf(static_cast<int>(h), -1)) picks.push_back(&graph.transition(id).sample);
+    }
+    std::vector<std::string> others;
+    for (int other = 0; other < task_space.numObjects() && !picks.empty(); ++other) {
+      const int site = ObjectSites::startSite(other);
+      if (std::all_of(picks.begin(), picks.end(), [site](const TransitionSample* p) { return p->touches.test(site); })) {
+        others.push_back(world.objects[static_cast<std::size_t>(other)].name);
+      }
+    }
+    if (others.empty()) continue;
+    std::string line = "every pick of " + world.objects[static_cast<std::size_t>(o)].name + " passes over ";
+    for (std::size_t k = 0; k < others.size(); ++k) {
+      line += (k == 0 ? "" : k + 1 == others.size() ? " and " : ", ") + others[k];
+    }
+    lines.push_back(line + " at " + (others.size() == 1 ? "its start" : "their starts"));
+  }
+  std::string text;
+  for (std::size_t k = 0; k < lines.size() && k < limit; ++k) text += "; " + lines[k];
+  if (lines.size() > limit) text += " and " + std::to_string(lines.size() - limit) + " more objects";
+  return text;
+}
+
 /// A sequential plan's steps may overlap where they keep clear of each other: conflict
 /// resolution runs again without the steps' order and any schedule shorter than theirs one
 /// after another will do. Where the shortest first finds none, the node free of conflicts for
@@ -375,10 +412,12 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     result.status = PlannerStatus::kTimeout;
     result.reason = (time_up() ? "time budget exhausted after " : "no plan after ") + std::to_string(graph->rounds()) +
                     " rounds of representation expansion: " + last_failure;
-    // without any task plan, the transitions the search asked for and the sampler never found
-    // say where the gap is (e.g. no handoff of an object too small for two grippers)
-    const std::vector<int> unsampled =
-        best_history || stats.task_plans > 0 ? std::vector<int>{} : graph->unsampledHyperarcs();
+    // without any task plan, picks that must wait for other objects to be picked first, and
+    // the transitions the search asked for and the sampler never found, say where the gap is
+    // (e.g. no handoff of an object too small for two grippers)
+    const bool no_task_plan = !best_history && stats.task_plans == 0;
+    if (no_task_plan) result.reason += crowdedPicks(*graph, 4);
+    const std::vector<int> unsampled = no_task_plan ? graph->unsampledHyperarcs() : std::vector<int>{};
     for (std::size_t k = 0; k < unsampled.size() && k < 4; ++k) {
       result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, task_space, unsampled[k]);
     }

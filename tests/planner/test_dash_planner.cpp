@@ -206,6 +206,17 @@ TEST_CASE("a timeout without any task plan names the transitions that were never
   CHECK_FALSE(result.plan);
 }
 
+TEST_CASE("a timeout without any task plan names the picks that pass over other objects", "[planner][dash]") {
+  PlannerSettings settings = testSettings();
+  settings.max_rounds = 2;
+  const PlanResult result = solve(core::loadWorld(testWorldPath("shelf_pick_deadlock.yaml")), settings);
+  CHECK(result.status == PlannerStatus::kTimeout);
+  CHECK_THAT(result.reason, Contains("no task plan in the representation; every pick of green_3 passes over "
+                                     "blue_0 and blue_3 at their starts"));
+  CHECK_THAT(result.reason, !Contains("every pick of blue_0") && !Contains("every pick of blue_3"));
+  CHECK_FALSE(result.plan);
+}
+
 TEST_CASE("the motion hypergraph's DOT shows its vertex map and transitions", "[planner][dash]") {
   const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
