@@ -524,8 +524,8 @@ TEST_CASE("Shelf slots are filled by pushing side-grasped items in horizontally"
 }
 
 TEST_CASE("A side-grasped item among others is picked from above, alone from the side", "[planner][transition]") {
-  // r1 can only take green_1 from its +y side, where coming in sideways its wrist passes over
-  // green_3 standing 0.36 m away
+  // coming in sideways into some of its grasps of green_1, r1's wrist passes over green_3,
+  // standing 0.36 m away
   const std::string file = "../tests/planner/worlds/shelf_items_side_by_side.yaml";
   const Setup& crowded = world(file);
   core::World alone_world = core::loadWorldFile(std::string(DASHBED_SOURCE_ROOT) + "/worlds/" + file);
