@@ -44,6 +44,19 @@ std::string describeTransition(const MotionHypergraph& graph, int id) {
          " (transition " + std::to_string(id) + ")";
 }
 
+/// Every pick sample of `object`, by any robot (picks are enumerated, not drawn: more rounds
+/// never add one).
+std::vector<const TransitionSample*> pickSamplesOf(MotionHypergraph& graph, int object) {
+  const TaskSpaceHypergraph& task_space = graph.taskSpace();
+  std::vector<const TransitionSample*> picks;
+  for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = task_space.hyperarcs()[h];
+    if (arc.object != object || arc.kind != TransitionKind::kPick) continue;
+    for (const int id : graph.transitionsOf(static_cast<int>(h), -1)) picks.push_back(&graph.transition(id).sample);
+  }
+  return picks;
+}
+
 /// "; every pick of green_3 passes over blue_0 and blue_3 at their starts": the objects with a
 /// goal that no robot picks without touching some other objects still at their start sites,
 /// and those objects (at most `limit` objects). Nothing is set down anywhere but at its goal,
@@ -55,12 +68,7 @@ std::string crowdedPicks(MotionHypergraph& graph, std::size_t limit) {
   std::vector<std::string> lines;
   for (int o = 0; o < task_space.numObjects(); ++o) {
     if (!graph.sites().goal[static_cast<std::size_t>(o)]) continue;
-    std::vector<const TransitionSample*> picks;
-    for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
-      const TransitionHyperarc& arc = task_space.hyperarcs()[h];
-      if (arc.object != o || arc.kind != TransitionKind::kPick) continue;
-      for (const int id : graph.transitionsOf(static_cast<int>(h), -1)) picks.push_back(&graph.transition(id).sample);
-    }
+    const std::vector<const TransitionSample*> picks = pickSamplesOf(graph, o);
     std::vector<std::string> others;
     for (int other = 0; other < task_space.numObjects() && !picks.empty(); ++other) {
       const int site = ObjectSites::startSite(other);
@@ -212,13 +220,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     const HyperpathSearch probe(*graph);
     for (int o = 0; o < task_space.numObjects(); ++o) {
       std::string reason = unreachableReason(*world.world, task_space, probe, o);
-      // picks are enumerated, not drawn: more rounds never add one
-      std::size_t picks = 0;
-      for (std::size_t h = 0; h < task_space.numHyperarcs() && reason.empty(); ++h) {
-        const TransitionHyperarc& arc = task_space.hyperarcs()[h];
-        if (arc.object == o && arc.kind == TransitionKind::kPick) picks += graph->transitionsOf(static_cast<int>(h), -1).size();
-      }
-      if (reason.empty() && graph->sites().goal[o] && picks == 0) {
+      const bool no_pick = reason.empty() && pickSamplesOf(*graph, o).empty();
+      if (no_pick && graph->sites().goal[o]) {
         reason = "no collision-free grasp of " + world.world->objects[o].name + " at its start for any robot reaching it";
       }
       if (!reason.empty()) {

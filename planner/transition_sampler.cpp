@@ -483,7 +483,7 @@ std::optional<TransitionSample> pickSample(Context& c, const Part& p) {
   // from above the item counts as resting, and is checked against the fingers, all the way down
   std::optional<TransitionSample> above = firstLine(*p.arm, shifted(X_WT, d * kUp), -d * kUp, c.settings,
                                                     [&](const Line& in) { return pickAlong(c, p, in, 0.0); });
-  if (above && (!sideways || (above->touches.subsetOf(sideways->touches) && !(above->touches == sideways->touches)))) {
+  if (above && (!sideways || (above->touches.subsetOf(sideways->touches) && above->touches != sideways->touches))) {
     return above;
   }
   return sideways;
