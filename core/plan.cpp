@@ -367,8 +367,9 @@ PlanAction readAction(const Reader& reader, const Json& value, const std::string
     action.robot = text("robot", "a " + type + " names its robot");
   }
   action.object = text("object", "every action names its object");
-  if (action.type == ActionType::kPlace) {
-    action.region = text("region", "a place names its goal region");
+  if (action.type == ActionType::kPlace && value.contains("region")) {  // none: set aside on a surface
+    action.region = reader.string(value.at("region"), at(pointer, "region"));
+    if (action.region.empty()) reader.fail(at(pointer, "region"), "a region name must not be empty (leave the field out to set the object aside)");
   }
   action.start = reader.number(reader.required(value, pointer, "start"), at(pointer, "start"));
   action.end = reader.number(reader.required(value, pointer, "end"), at(pointer, "end"));
@@ -532,7 +533,7 @@ void checkActions(const Plan& plan, const std::string& file) {
     }
     checkName(file, at(pointer, "object"), action.object);
     if (action.type == ActionType::kPlace) {
-      checkName(file, at(pointer, "region"), action.region);
+      if (!action.region.empty()) checkName(file, at(pointer, "region"), action.region);
     } else if (!action.region.empty()) {
       fail(file, at(pointer, "region"),
            "only place actions have a region, this is a " + std::string(toString(action.type)));
@@ -741,7 +742,7 @@ void validatePlan(const Plan& plan, const World& world,
            "unknown object " + inQuotes(action.object) + " (world " + inQuotes(world.name) +
                " has " + nameList(world.objects, [](const ObjectSpec& o) { return o.name; }) + ")");
     }
-    if (action.type == ActionType::kPlace && world.findRegion(action.region) == nullptr) {
+    if (action.type == ActionType::kPlace && !action.region.empty() && world.findRegion(action.region) == nullptr) {
       fail(file, at(pointer, "region"),
            "unknown region " + inQuotes(action.region) + " (world " + inQuotes(world.name) +
                " has " + nameList(world.regions, [](const Region& g) { return g.name; }) + ")");
@@ -802,7 +803,7 @@ std::string writePlanJson(const Plan& plan) {
       entry["robot"] = action.robot;
     }
     entry["object"] = action.object;
-    if (action.type == ActionType::kPlace) entry["region"] = action.region;
+    if (!action.region.empty()) entry["region"] = action.region;
     entry["start"] = action.start;
     entry["end"] = action.end;
     actions.push_back(std::move(entry));

@@ -52,7 +52,9 @@ struct PlanAction {
   std::string robot;     ///< pick/place: the robot; handoff: the giver
   std::string receiver;  ///< handoff only
   std::string object;
-  std::string region;    ///< place only: the goal region
+  /// place only: the goal region; empty for a place that sets the object aside on a stable
+  /// surface, to be picked up there again (an intermediate placement)
+  std::string region;
   double start = 0.0;    ///< [s] the gripper starts approaching
   double end = 0.0;      ///< [s] the action is complete (place: the gripper has released and retreated)
 };

@@ -31,10 +31,12 @@ std::string nodesText(int nodes) { return " (" + std::to_string(nodes) + " nodes
 /// "pick cube_0 by r1", "handoff cube_0 by r0 to r1": a task-space hyperarc in words.
 std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph& task_space, int hyperarc) {
   const TransitionHyperarc& arc = task_space.hyperarcs().at(static_cast<std::size_t>(hyperarc));
+  const bool aside = arc.rest_pose == RestPose::kAside;
   static const char* const kinds[] = {"pick", "place", "handoff"};
-  std::string text = std::string(kinds[static_cast<int>(arc.kind)]) + " " + world.objects[arc.object].name + " by " +
-                     world.robots[arc.robot].name;
+  std::string text = std::string(aside && arc.kind == TransitionKind::kPlace ? "set aside" : kinds[static_cast<int>(arc.kind)]) +
+                     " " + world.objects[arc.object].name + " by " + world.robots[arc.robot].name;
   if (arc.kind == TransitionKind::kHandoff) text += " to " + world.robots[arc.receiver].name;
+  if (aside && arc.kind == TransitionKind::kPick) text += " where it was set aside";
   return text;
 }
 
@@ -51,37 +53,57 @@ std::vector<const TransitionSample*> pickSamplesOf(MotionHypergraph& graph, int 
   std::vector<const TransitionSample*> picks;
   for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = task_space.hyperarcs()[h];
-    if (arc.object != object || arc.kind != TransitionKind::kPick) continue;
+    if (arc.object != object || arc.kind != TransitionKind::kPick || arc.rest_pose != RestPose::kStart) continue;
     for (const int id : graph.transitionsOf(static_cast<int>(h), -1)) picks.push_back(&graph.transition(id).sample);
   }
   return picks;
 }
 
-/// "; every pick of green_3 passes over blue_0 and blue_3 at their starts": the objects with a
-/// goal that no robot picks without touching some other objects still at their start sites,
-/// and those objects (at most `limit` objects). Nothing is set down anywhere but at its goal,
-/// so such a pick waits until the others have been picked up; where those must wait for it in
-/// turn (a front slot for its back one), no task plan may exist.
-std::string crowdedPicks(MotionHypergraph& graph, std::size_t limit) {
+/// An object with a goal that no robot picks without touching the start sites of `others`.
+struct CrowdedPick {
+  int object = -1;
+  std::vector<int> others;
+};
+
+/// The objects with a goal whose every pick sample (start sites only) touches some other
+/// objects' start sites, with those objects. Such a pick waits until the others have been
+/// picked up; where those must wait for it in turn (a front slot for its back one), one of them
+/// has to be set aside meanwhile.
+std::vector<CrowdedPick> crowdedPicks(MotionHypergraph& graph) {
   const TaskSpaceHypergraph& task_space = graph.taskSpace();
-  const core::World& world = *graph.world().world;
-  std::vector<std::string> lines;
+  std::vector<CrowdedPick> crowded;
   for (int o = 0; o < task_space.numObjects(); ++o) {
     if (!graph.sites().goal[static_cast<std::size_t>(o)]) continue;
     const std::vector<const TransitionSample*> picks = pickSamplesOf(graph, o);
-    std::vector<std::string> others;
+    CrowdedPick pick{o, {}};
     for (int other = 0; other < task_space.numObjects() && !picks.empty(); ++other) {
       const int site = ObjectSites::startSite(other);
       if (std::all_of(picks.begin(), picks.end(), [site](const TransitionSample* p) { return p->touches.test(site); })) {
-        others.push_back(world.objects[static_cast<std::size_t>(other)].name);
+        pick.others.push_back(other);
       }
     }
-    if (others.empty()) continue;
-    std::string line = "every pick of " + world.objects[static_cast<std::size_t>(o)].name + " passes over ";
-    for (std::size_t k = 0; k < others.size(); ++k) {
-      line += (k == 0 ? "" : k + 1 == others.size() ? " and " : ", ") + others[k];
-    }
-    lines.push_back(line + " at " + (others.size() == 1 ? "its start" : "their starts"));
+    if (!pick.others.empty()) crowded.push_back(std::move(pick));
+  }
+  return crowded;
+}
+
+/// "blue_0 and blue_3", "a, b and c"
+std::string objectList(const core::World& world, const std::vector<int>& objects) {
+  std::string text;
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    text += (k == 0 ? "" : k + 1 == objects.size() ? " and " : ", ") + world.objects[static_cast<std::size_t>(objects[k])].name;
+  }
+  return text;
+}
+
+/// "; every pick of green_3 passes over blue_0 and blue_3 at their starts": crowdedPicks, at
+/// most `limit` objects.
+std::string crowdedPicksText(MotionHypergraph& graph, std::size_t limit) {
+  const core::World& world = *graph.world().world;
+  std::vector<std::string> lines;
+  for (const CrowdedPick& pick : crowdedPicks(graph)) {
+    lines.push_back("every pick of " + world.objects[static_cast<std::size_t>(pick.object)].name + " passes over " +
+                    objectList(world, pick.others) + " at " + (pick.others.size() == 1 ? "its start" : "their starts"));
   }
   std::string text;
   for (std::size_t k = 0; k < lines.size() && k < limit; ++k) text += "; " + lines[k];
@@ -135,6 +157,7 @@ nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStat
           {"status", "solved"},
           {"rounds", stats.rounds},
           {"task_space_hypergraph", {{"vertices", stats.task_vertices}, {"hyperarcs", stats.task_hyperarcs}}},
+          {"set_aside_sites", stats.set_aside_sites},
           {"motion_hypergraph",
            {{"vertices", stats.motion_vertices},
             {"transitions", stats.motion_transitions},
@@ -198,12 +221,12 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     result.reason = e.what();
     return result;
   }
-  const TaskSpaceHypergraph task_space =
-      TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites));
-  const double task_space_seconds = secondsSince(started);
-  stats.task_vertices = task_space.numVertices();
-  stats.task_hyperarcs = task_space.numHyperarcs();
-  const auto graph = std::make_unique<MotionHypergraph>(world, task_space, settings.seed, settings.representation);
+  auto task_space = std::make_unique<const TaskSpaceHypergraph>(
+      TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites)));
+  double task_space_seconds = secondsSince(started);
+  stats.task_vertices = task_space->numVertices();
+  stats.task_hyperarcs = task_space->numHyperarcs();
+  auto graph = std::make_unique<MotionHypergraph>(world, *task_space, sites, settings.seed, settings.representation);
   const auto record = [&] {
     stats.construction_seconds = task_space_seconds + graph->constructionSeconds();
     stats.rounds = graph->rounds();
@@ -218,8 +241,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   // objects that can never reach their goals: infeasible, whatever the sampling
   {
     const HyperpathSearch probe(*graph);
-    for (int o = 0; o < task_space.numObjects(); ++o) {
-      std::string reason = unreachableReason(*world.world, task_space, probe, o);
+    for (int o = 0; o < task_space->numObjects(); ++o) {
+      std::string reason = unreachableReason(*world.world, *task_space, probe, o);
       const bool no_pick = reason.empty() && pickSamplesOf(*graph, o).empty();
       if (no_pick && graph->sites().goal[o]) {
         reason = "no collision-free grasp of " + world.world->objects[o].name + " at its start for any robot reaching it";
@@ -229,6 +252,47 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         record();
         return result;
       }
+    }
+  }
+
+  // objects in the way of every pick of another one get set-aside sites, in case that one must
+  // go in before them (a shelf item behind one that goes into the slot in front of it): the
+  // representation is built again with them
+  if (const std::vector<CrowdedPick> crowded = settings.set_aside ? crowdedPicks(*graph) : std::vector<CrowdedPick>{};
+      !crowded.empty()) {
+    std::vector<int> in_the_way;
+    for (const CrowdedPick& pick : crowded) in_the_way.insert(in_the_way.end(), pick.others.begin(), pick.others.end());
+    std::sort(in_the_way.begin(), in_the_way.end());
+    in_the_way.erase(std::unique(in_the_way.begin(), in_the_way.end()), in_the_way.end());
+    const Clock::time_point t0 = Clock::now();
+    const std::vector<int> given = setAsideSites(world, sites, in_the_way);
+    if (!given.empty()) {
+      std::vector<std::vector<int>> aside(world.world->objects.size());
+      for (const int o : given) {
+        for (std::size_t r = 0; r < world.robots->size(); ++r) {
+          if (core::reachesBox((*world.robots)[r], *sites.aside[o], world.world->objects[o].size)) {
+            aside[o].push_back(static_cast<int>(r));
+          }
+        }
+      }
+      auto with_aside = std::make_unique<const TaskSpaceHypergraph>(
+          TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites), aside));
+      // the first representation's construction (its pick samples) counts, then the new one's
+      task_space_seconds += graph->constructionSeconds() + secondsSince(t0);
+      graph = std::make_unique<MotionHypergraph>(world, *with_aside, sites, settings.seed, settings.representation);
+      task_space = std::move(with_aside);
+      stats.task_vertices = task_space->numVertices();
+      stats.task_hyperarcs = task_space->numHyperarcs();
+      stats.set_aside_sites = static_cast<int>(given.size());
+      std::ostringstream where;
+      where << std::fixed << std::setprecision(3);
+      for (const int o : given) {
+        const Eigen::Vector3d& p = sites.aside[o]->translation();
+        where << (o == given.front() ? "" : ", ") << world.world->objects[o].name << " at (" << p.x() << ", " << p.y() << ")";
+      }
+      say("set-aside sites: " + where.str() + crowdedPicksText(*graph, 4));
+    } else {
+      task_space_seconds += secondsSince(t0);
     }
   }
 
@@ -311,7 +375,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     return found;
   };
 
-  std::vector<bool> checked_placeable(static_cast<std::size_t>(task_space.numObjects()), false);
+  std::vector<bool> checked_placeable(static_cast<std::size_t>(task_space->numObjects()), false);
   for (int round = 1; round <= settings.max_rounds && !time_up(); ++round) {
     if (round > 1) graph->expand();
     feedbacks = 0;
@@ -392,7 +456,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // an object without any place sample after a round may be one no grasp can ever place; so
     // may any object while no task plan has been found at all (its place samples may be for
     // grasps the placing robot can never come to hold)
-    for (int o = 0; o < task_space.numObjects(); ++o) {
+    for (int o = 0; o < task_space->numObjects(); ++o) {
       if (checked_placeable[static_cast<std::size_t>(o)] || !graph->sites().goal[o] ||
           (graph->hasPlaceSample(o) && stats.task_plans > 0)) {
         continue;
@@ -419,10 +483,10 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // the transitions the search asked for and the sampler never found, say where the gap is
     // (e.g. no handoff of an object too small for two grippers)
     const bool no_task_plan = !best_history && stats.task_plans == 0;
-    if (no_task_plan) result.reason += crowdedPicks(*graph, 4);
+    if (no_task_plan) result.reason += crowdedPicksText(*graph, 4);
     const std::vector<int> unsampled = no_task_plan ? graph->unsampledHyperarcs() : std::vector<int>{};
     for (std::size_t k = 0; k < unsampled.size() && k < 4; ++k) {
-      result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, task_space, unsampled[k]);
+      result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, *task_space, unsampled[k]);
     }
     if (unsampled.size() > 4) result.reason += " and " + std::to_string(unsampled.size() - 4) + " more";
     return result;

@@ -64,6 +64,10 @@ struct PlannerSettings {
   /// failed) is kept as a fallback: the direct queries go on for this many more rounds of
   /// expansion, and a plan they find replaces it when shorter.
   int sequential_fallback_rounds = 2;
+  /// Objects standing where another object's every pick reaches over them get set-aside sites
+  /// (ObjectSites::aside), so that they may be set down there for a while: needed where that
+  /// object must go in before them (a shelf item behind one that goes into the slot in front).
+  bool set_aside = true;
   RepresentationSettings representation;
 };
 
@@ -80,6 +84,7 @@ struct PlannerStats {
   double conflict_seconds = 0.0;      ///< conflict resolution
   int rounds = 0;
   std::size_t task_vertices = 0, task_hyperarcs = 0;
+  int set_aside_sites = 0;  ///< objects given a set-aside site (in the way of another's every pick)
   std::size_t motion_vertices = 0, motion_transitions = 0, motion_moves = 0;
   std::size_t roadmaps = 0, roadmap_nodes = 0;
   std::uint64_t expansions = 0;  ///< hyperpath-search expansions, all rounds

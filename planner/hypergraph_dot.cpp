@@ -81,7 +81,10 @@ void writeMotionDot(std::ostream& out, const MotionHypergraph& graph) {
       std::ostringstream label;
       label << 'm' << v;
       if (m.grasp >= 0) label << " g" << m.grasp;
-      if (m.site >= 0) label << (m.site % 2 == 0 ? " start" : " goal");
+      if (m.site >= 0) {
+        const int o = ObjectSites::objectOf(m.site);
+        label << (m.site == ObjectSites::startSite(o) ? " start" : m.site == ObjectSites::goalSite(o) ? " goal" : " aside");
+      }
       out << "    m" << v << " [label=" << quoted(label.str()) << ", " << vertexStyle(ts.vertices()[t].kind) << "];\n";
     }
     out << "  }\n";

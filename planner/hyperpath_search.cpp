@@ -16,8 +16,10 @@ struct HyperpathSearch::Candidate {
   bool exact = false;
   /// the object has to wait for another one to be placed first (placedBefore)
   bool waits = false;
+  /// it sets the object aside, the last resort: after every other way on from the history
+  bool set_aside = false;
 
-  auto key() const { return std::make_tuple(waits, start, -remaining, transition); }
+  auto key() const { return std::make_tuple(set_aside, waits, start, -remaining, transition); }
 };
 
 /// The A*-like query's frontier, kept between nextBest() calls.
@@ -43,6 +45,11 @@ constexpr Millis kUnreachable = -1;
 /// Samples per hyperarc and grasp the A*-like query branches on (the fastest ones).
 constexpr std::size_t kAStarSamplesPerHyperarc = 2;
 
+/// The site a place hyperarc puts its object down at: its goal or set-aside site.
+int placeSite(const TransitionHyperarc& arc) {
+  return arc.rest_pose == RestPose::kAside ? ObjectSites::asideSite(arc.object) : ObjectSites::goalSite(arc.object);
+}
+
 /// The robots a move of `history` keeps clear of, standing idle: in a sequential history, every
 /// other robot (MotionHypergraph::move's around_idle).
 std::optional<IdlePose> aroundIdle(const TransitionHistory& history) {
@@ -64,7 +71,7 @@ HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode)
   for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = ts.hyperarcs()[h];
     int& place = place_hyperarc_[static_cast<std::size_t>(arc.robot * ts.numObjects() + arc.object)];
-    if (arc.kind == TransitionKind::kPlace && place < 0) place = static_cast<int>(h);
+    if (arc.kind == TransitionKind::kPlace && arc.rest_pose == RestPose::kGoal && place < 0) place = static_cast<int>(h);
   }
   updateCostToGo();
 }
@@ -103,7 +110,7 @@ void HyperpathSearch::updatePlacementOrder() {
   std::vector<std::vector<int>> places(static_cast<std::size_t>(objects));
   for (int id = 0; id < static_cast<int>(placement_order_transitions_); ++id) {
     const TransitionSample& sample = graph_->transition(id).sample;
-    if (sample.kind == TransitionKind::kPlace && !knownUnusable(id)) places[sample.object].push_back(id);
+    if (restPose(sample) == RestPose::kGoal && !knownUnusable(id)) places[sample.object].push_back(id);
   }
   for (int first = 0; first < objects; ++first) {
     if (places[first].empty()) continue;
@@ -126,6 +133,21 @@ Millis HyperpathSearch::costToGo(int object, int task_vertex) const {
   return cost_to_go_.at(object).at(task_vertex);
 }
 
+Millis HyperpathSearch::costToGo(const TransitionHistory& history, int object) const {
+  const TransitionHistory::ObjectState& state = history.objects.at(static_cast<std::size_t>(object));
+  switch (state.place) {
+    case ObjectPlace::kStart: return costToGo(object, graph_->taskSpace().objectRestingVertex(object));
+    case ObjectPlace::kHeld: return costToGo(object, graph_->taskSpace().holdingVertex(state.holder, object));
+    case ObjectPlace::kAside: return aside_cost_to_go_.at(static_cast<std::size_t>(object));
+    case ObjectPlace::kGoal: break;
+  }
+  return 0;
+}
+
+RestPose HyperpathSearch::restPose(const TransitionSample& sample) const {
+  return graph_->taskSpace().hyperarcs().at(static_cast<std::size_t>(sample.hyperarc)).rest_pose;
+}
+
 void HyperpathSearch::updateCostToGo() {
   if (!cost_to_go_.empty() && graph_->numTransitions() == cost_to_go_transitions_) return;
   const TaskSpaceHypergraph& ts = graph_->taskSpace();
@@ -134,7 +156,9 @@ void HyperpathSearch::updateCostToGo() {
   const auto duration = [&](int h) { return graph_->bestDuration(h).value_or(dwell); };
   cost_to_go_transitions_ = graph_->numTransitions();
   const std::vector<std::vector<Millis>> before = std::move(cost_to_go_);
+  const std::vector<Millis> aside_before = std::move(aside_cost_to_go_);
   cost_to_go_.assign(ts.numObjects(), std::vector<Millis>(ts.numVertices(), kUnreachable));
+  aside_cost_to_go_.assign(ts.numObjects(), kUnreachable);
   for (int o = 0; o < ts.numObjects(); ++o) {
     std::vector<Millis>& cost = cost_to_go_[o];
     if (!sites.goal[o]) {
@@ -148,12 +172,13 @@ void HyperpathSearch::updateCostToGo() {
       }
       return false;
     };
-    // Bellman-Ford backwards from the goal over this object's vertices (at most n robots deep)
+    // Bellman-Ford backwards from the goal over this object's vertices (at most n robots deep),
+    // without setting it aside (the resting vertex stands for its start here)
     for (bool changed = true; changed;) {
       changed = false;
       for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
         const TransitionHyperarc& arc = ts.hyperarcs()[h];
-        if (arc.object != o) continue;
+        if (arc.object != o || arc.rest_pose == RestPose::kAside) continue;
         const int hi = static_cast<int>(h);
         if (arc.kind == TransitionKind::kPlace) {
           changed |= relax(ts.holdingVertex(arc.robot, o), duration(hi));
@@ -166,8 +191,18 @@ void HyperpathSearch::updateCostToGo() {
         }
       }
     }
+    // set aside: picked up again from there
+    for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
+      const TransitionHyperarc& arc = ts.hyperarcs()[h];
+      if (arc.object != o || arc.kind != TransitionKind::kPick || arc.rest_pose != RestPose::kAside) continue;
+      const Millis after = cost[ts.holdingVertex(arc.robot, o)];
+      Millis& aside = aside_cost_to_go_[static_cast<std::size_t>(o)];
+      if (after != kUnreachable && (aside == kUnreachable || duration(static_cast<int>(h)) + after < aside)) {
+        aside = duration(static_cast<int>(h)) + after;
+      }
+    }
   }
-  if (cost_to_go_ != before) ++cost_to_go_version_;
+  if (cost_to_go_ != before || aside_cost_to_go_ != aside_before) ++cost_to_go_version_;
 }
 
 void HyperpathSearch::rekeyFrontier() {
@@ -213,24 +248,24 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
     // after the others: an object whose goal needs another placed first, and in a sequential
     // history a second object on the move
     const bool waits = waits_for_others(o) || (history.sequential && arc.kind == TransitionKind::kPick && holding);
+    const bool aside = arc.rest_pose == RestPose::kAside;
+    // setting an object aside is the last resort, except for one that waits for others (it comes
+    // after the others' transitions, as its other ones do)
+    const bool last_resort = aside && arc.kind == TransitionKind::kPlace && !waits_for_others(o);
     int grasp = -1;
-    Millis before = 0, after = 0;  // the object's cost to go before and after the transition
+    const Millis before = costToGo(history, o);  // the object's cost to go before the transition
     switch (arc.kind) {
       case TransitionKind::kPick:
-        if (object.place != ObjectPlace::kStart || robot.object != -1 || !second_pick) continue;
-        before = costToGo(o, ts.objectRestingVertex(o));
-        after = costToGo(o, ts.holdingVertex(arc.robot, o));
-        if (after == kUnreachable) continue;
+        if (object.place != (aside ? ObjectPlace::kAside : ObjectPlace::kStart) || robot.object != -1 || !second_pick) continue;
+        if (costToGo(o, ts.holdingVertex(arc.robot, o)) == kUnreachable) continue;
         break;
       case TransitionKind::kPlace:
-        if (robot.object != o) continue;
+        if (robot.object != o || (aside && object.set_aside)) continue;
         grasp = robot.grasp;
-        before = costToGo(o, ts.holdingVertex(arc.robot, o));
         break;
       case TransitionKind::kHandoff:
         if (robot.object != o || history.robots[arc.receiver].object != -1) continue;
         grasp = robot.grasp;
-        before = costToGo(o, ts.holdingVertex(arc.robot, o));
         if (before == kUnreachable || !handoffAllowed(history, arc)) continue;
         break;
     }
@@ -242,8 +277,8 @@ std::vector<HyperpathSearch::Candidate> HyperpathSearch::candidates(const Transi
         const TransitionHistory::RobotState& r = history.robots[motion.robot];
         start = std::max(start, r.free + restToRestDuration(r.q, motion.start(), graph_->timing()));
       }
-      if (arc.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[ObjectSites::goalSite(o)]);
-      result.push_back({id, start, before, false, waits});
+      if (arc.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[placeSite(arc)]);
+      result.push_back({id, start, before, false, waits, last_resort});
     }
   }
   return result;
@@ -338,17 +373,21 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
   const int o = sample.object;
   TransitionHistory next = history;
 
-  // objects whose start sites a motion touches must have left them before it starts
+  // objects whose start (or set-aside) sites a motion touches must have left them before it
+  // starts
   const auto after_left = [&](const SiteSet& touches, Millis t) {
     for (int b = 0; b < sites.numObjects(); ++b) {
-      if (touches.test(ObjectSites::startSite(b))) t = std::max(t, history.objects[b].since);
+      const bool left_aside = history.objects[b].set_aside && touches.test(ObjectSites::asideSite(b));
+      if (touches.test(ObjectSites::startSite(b)) || left_aside) t = std::max(t, history.objects[b].since);
     }
     return t;
   };
-  // ... and goal sites it touches stay busy until it ends
+  // ... and goal and set-aside sites it touches stay busy until it ends
   const auto mark_busy = [&](const SiteSet& touches, Millis end) {
-    for (int s = 1; s < sites.numSites(); s += 2) {
-      if (touches.test(s)) next.site_busy[s] = std::max(next.site_busy[s], end);
+    for (int b = 0; b < sites.numObjects(); ++b) {
+      for (const int s : {ObjectSites::goalSite(b), ObjectSites::asideSite(b)}) {
+        if (touches.test(s)) next.site_busy[s] = std::max(next.site_busy[s], end);
+      }
     }
   };
 
@@ -384,7 +423,8 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
     step.moves.push_back(std::move(moves));
     start = std::max(start, t);
   }
-  if (sample.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[ObjectSites::goalSite(o)]);
+  const TransitionHyperarc& arc = graph_->taskSpace().hyperarcs().at(static_cast<std::size_t>(sample.hyperarc));
+  if (sample.kind == TransitionKind::kPlace) start = std::max(start, history.site_busy[placeSite(arc)]);
   start = after_left(sample.touches, start);
   step.start = start;
   const Millis end = start + sample.duration;
@@ -405,7 +445,8 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
       next.robots[object.holder].grasp = holder_grasp(0);
       break;
     case TransitionKind::kPlace:
-      object.place = ObjectPlace::kGoal;
+      object.place = arc.rest_pose == RestPose::kAside ? ObjectPlace::kAside : ObjectPlace::kGoal;
+      object.set_aside |= object.place == ObjectPlace::kAside;
       next.robots[object.holder].object = next.robots[object.holder].grasp = -1;
       object.holder = -1;
       break;
@@ -468,7 +509,9 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
       const TransitionHyperarc& arc = ts.hyperarcs()[h];
       const int r = arc.robot;
       if (progresses[r] || history.robots[r].object != arc.object || arc.kind == TransitionKind::kPick) continue;
-      bool ok = arc.kind == TransitionKind::kPlace;
+      // a place into the goal, or setting the object aside (once)
+      bool ok = arc.kind == TransitionKind::kPlace &&
+                (arc.rest_pose == RestPose::kGoal || !history.objects[arc.object].set_aside);
       if (arc.kind == TransitionKind::kHandoff) {
         ok = handoffAllowed(history, arc) &&
              (history.robots[arc.receiver].object == -1 || progresses[arc.receiver]);
@@ -479,24 +522,27 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   for (std::size_t r = 0; r < n; ++r) {
     if (history.robots[r].object != -1 && !progresses[r]) return true;
   }
-  if (history.steps.empty() || graph_->transition(history.steps.back().transition).sample.kind != TransitionKind::kPlace) {
+  if (history.steps.empty() ||
+      restPose(graph_->transition(history.steps.back().transition).sample) != RestPose::kGoal) {
     return false;
   }
   for (std::size_t o = 0; o < history.objects.size(); ++o) {
     const int oi = static_cast<int>(o);
-    if (!graph_->sites().goal[o] || history.objects[o].place == ObjectPlace::kGoal) continue;
-    if (history.objects[o].place == ObjectPlace::kStart) {  // every pick reaches over a filled goal site
+    const ObjectPlace place = history.objects[o].place;
+    if (!graph_->sites().goal[o] || place == ObjectPlace::kGoal) continue;
+    if (place == ObjectPlace::kStart || place == ObjectPlace::kAside) {  // every pick reaches over a filled goal site
+      const RestPose from = place == ObjectPlace::kStart ? RestPose::kStart : RestPose::kAside;
       bool pickable = false;
       for (std::size_t h = 0; h < ts.numHyperarcs() && !pickable; ++h) {
         const TransitionHyperarc& arc = ts.hyperarcs()[h];
-        if (arc.kind == TransitionKind::kPick && arc.object == oi) pickable = available(h, -1);
+        if (arc.kind == TransitionKind::kPick && arc.object == oi && arc.rest_pose == from) pickable = available(h, -1);
       }
       if (!pickable) return true;
     }
     bool placeable = false;
     for (std::size_t h = 0; h < ts.numHyperarcs() && !placeable; ++h) {
       const TransitionHyperarc& arc = ts.hyperarcs()[h];
-      if (arc.kind != TransitionKind::kPlace || arc.object != oi) continue;
+      if (arc.kind != TransitionKind::kPlace || arc.object != oi || arc.rest_pose != RestPose::kGoal) continue;
       // by index: sampling may add grasps
       for (std::size_t g = 0; g < graph_->graspsOf(oi).size() && !placeable; ++g) {
         placeable = available(h, static_cast<int>(g));
@@ -508,7 +554,6 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
 }
 
 Millis HyperpathSearch::lowerBound(const TransitionHistory& history) const {
-  const TaskSpaceHypergraph& ts = graph_->taskSpace();
   Millis bound = 0;
   for (std::size_t r = 0; r < history.robots.size(); ++r) {
     const TransitionHistory::RobotState& robot = history.robots[r];
@@ -519,8 +564,7 @@ Millis HyperpathSearch::lowerBound(const TransitionHistory& history) const {
     const TransitionHistory::ObjectState& object = history.objects[o];
     const int oi = static_cast<int>(o);
     if (object.place == ObjectPlace::kGoal) continue;
-    const int v = object.place == ObjectPlace::kStart ? ts.objectRestingVertex(oi) : ts.holdingVertex(object.holder, oi);
-    const Millis to_go = costToGo(oi, v);
+    const Millis to_go = costToGo(history, oi);
     if (to_go == kUnreachable) return std::numeric_limits<Millis>::max();
     bound = std::max(bound, object.since + to_go);
   }
@@ -572,7 +616,8 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
       if (!next || deadlocked(*next)) continue;
       const Millis exact = next->steps.back().start;
       if (!candidate.exact && !frame.queue.empty() &&
-          std::tie(candidate.waits, exact) > std::tie(frame.queue.front().waits, frame.queue.front().start)) {
+          std::tie(candidate.set_aside, candidate.waits, exact) >
+              std::tie(frame.queue.front().set_aside, frame.queue.front().waits, frame.queue.front().start)) {
         candidate.start = exact;
         candidate.exact = true;
         frame.queue.push_back(candidate);
@@ -627,6 +672,7 @@ SearchResult HyperpathSearch::nextBest(const SearchBudget& budget) {
     }
     for (std::size_t o = 0; o < h.objects.size(); ++o) {
       key.push_back(static_cast<long long>(h.objects[o].place));
+      key.push_back(h.objects[o].set_aside);
       key.push_back(h.objects[o].holder);
       key.push_back(held_by[o]);
       times.push_back(h.objects[o].since);

@@ -26,6 +26,14 @@
 // every place sample of another object touches (a front slot filled before its back one), or
 // that every pick sample of an object still at its start reaches over.
 //
+// Setting objects aside. An object with a set-aside site (ObjectSites::aside) may be set down
+// there once and picked up again later, e.g. a shelf item standing where every pick of the one
+// behind it reaches over it, that must go in only after that one (into the slot in front of
+// it): a robot holding it would wait with it. The greedy query sets an object aside only after
+// every other way on from a history, unless it waits for another to be placed (then with that
+// object's other transitions, see greedy()); a holding robot that can set its object aside
+// progresses (the dead-end check below).
+//
 // Cost-to-go (the A*-like query's heuristic): for each object and task-space vertex, the
 // cheapest sum of sampled transition durations to its goal on the task-space hypergraph
 // (objects only, robots assumed free: a lower bound on the remaining makespan for that
@@ -104,8 +112,11 @@ class HyperpathSearch {
   /// The next-best complete history of the A*-like query (the frontier is kept between calls).
   SearchResult nextBest(const SearchBudget& budget);
 
-  /// Cost-to-go of object o at task-space vertex v [ms] (infinite: -1).
+  /// Cost-to-go of object o at task-space vertex v [ms] (infinite: -1); at the resting vertex,
+  /// from its start.
   Millis costToGo(int object, int task_vertex) const;
+  /// Cost-to-go of an object where a history has it (0 at its goal; infinite: -1).
+  Millis costToGo(const TransitionHistory& history, int object) const;
   /// The objects that go before `object` (see greedy()): every usable place sample of theirs
   /// so far touches its goal site, as a place into the back of a shelf passes through the
   /// front slot. Samples nothing for this.
@@ -117,6 +128,8 @@ class HyperpathSearch {
   /// The virtual source's history in this query's mode (with idle robots folded, after every
   /// robot has folded), or std::nullopt when a robot finds no way to fold.
   std::optional<TransitionHistory> source();
+  /// The rest pose of a sample's hyperarc (start, goal, set-aside; none for a handoff).
+  RestPose restPose(const TransitionSample& sample) const;
   std::vector<Candidate> candidates(const TransitionHistory& history);
   std::optional<TransitionHistory> apply(const TransitionHistory& history, const Candidate& candidate);
   std::optional<TransitionHistory> finish(const TransitionHistory& history);
@@ -167,6 +180,7 @@ class HyperpathSearch {
   SiteSet final_occupancy_;  ///< goal sites, and the start sites of objects without a goal
   std::vector<int> place_hyperarc_;  ///< [robot * objects + object] its place hyperarc, or -1
   std::vector<std::vector<Millis>> cost_to_go_;  // [object][task vertex], -1 = unreachable
+  std::vector<Millis> aside_cost_to_go_;         // [object] from its set-aside site, -1 = unreachable
   std::size_t cost_to_go_transitions_ = 0;  ///< transitions sampled when cost_to_go_ was made
   std::uint64_t cost_to_go_version_ = 0;      ///< changes of cost_to_go_ so far
   std::vector<std::vector<int>> placed_before_;  ///< [object] see placedBefore()

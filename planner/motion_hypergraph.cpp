@@ -56,11 +56,24 @@ void RepresentationSettings::validate() const {
 
 MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
                                    std::uint64_t seed, const RepresentationSettings& settings)
-    : world_(&world), task_space_(&task_space), seed_(seed), settings_(settings) {
+    : MotionHypergraph(world, task_space, objectSites(world), seed, settings) {}
+
+MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
+                                   ObjectSites sites, std::uint64_t seed, const RepresentationSettings& settings)
+    : world_(&world), task_space_(&task_space), seed_(seed), settings_(settings), sites_(std::move(sites)) {
   const ScopedTimer timer(construction_seconds_);
   settings_.validate();
+  if (sites_.numObjects() != task_space.numObjects()) {
+    throw std::invalid_argument("MotionHypergraph: the sites are for " + std::to_string(sites_.numObjects()) +
+                                " objects, the task-space hypergraph has " + std::to_string(task_space.numObjects()));
+  }
+  for (const TransitionHyperarc& arc : task_space.hyperarcs()) {
+    if (arc.rest_pose == RestPose::kAside && !sites_.aside[static_cast<std::size_t>(arc.object)]) {
+      throw std::invalid_argument("MotionHypergraph: " + task_space.objectName(arc.object) +
+                                  " has set-aside hyperarcs and no set-aside site");
+    }
+  }
   scene_ = std::make_unique<CollisionScene>(*world.world, *world.robots, settings_.collision);
-  sites_ = objectSites(world);
   sampler_ = std::make_unique<TransitionSampler>(world, task_space, *scene_, sites_, settings_.transitions);
   // every robot of a world is a UR5e: the first one's limits stand for all
   const core::RobotModel& model = *world.robots->robots().front().model;
@@ -102,7 +115,7 @@ int MotionHypergraph::holdingVertex(int robot, int object, int grasp, const core
 }
 
 int MotionHypergraph::siteVertex(int site) {
-  return addVertex({task_space_->objectRestingVertex(site / 2), {}, -1, site});
+  return addVertex({task_space_->objectRestingVertex(ObjectSites::objectOf(site)), {}, -1, site});
 }
 
 int MotionHypergraph::graspId(int object, const Grasp& grasp) {
@@ -121,14 +134,16 @@ void MotionHypergraph::addTransition(TransitionSample sample) {
   switch (arc.kind) {
     case TransitionKind::kPick: {
       const int grasp = graspId(o, *sample.grasp_after);
-      transition.tail = {robotVertex(arc.robot, sample.motions[0].start()), siteVertex(ObjectSites::startSite(o))};
+      const int site = arc.rest_pose == RestPose::kAside ? ObjectSites::asideSite(o) : ObjectSites::startSite(o);
+      transition.tail = {robotVertex(arc.robot, sample.motions[0].start()), siteVertex(site)};
       transition.head = {holdingVertex(arc.robot, o, grasp, sample.motions[0].end())};
       break;
     }
     case TransitionKind::kPlace: {
       const int grasp = graspId(o, *sample.grasp_before);
       transition.tail = {holdingVertex(arc.robot, o, grasp, sample.motions[0].start())};
-      transition.head = {robotVertex(arc.robot, sample.motions[0].end()), siteVertex(ObjectSites::goalSite(o))};
+      const int site = arc.rest_pose == RestPose::kAside ? ObjectSites::asideSite(o) : ObjectSites::goalSite(o);
+      transition.head = {robotVertex(arc.robot, sample.motions[0].end()), siteVertex(site)};
       break;
     }
     case TransitionKind::kHandoff: {
@@ -264,7 +279,7 @@ Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<co
   m.touches = SiteSet(sites_.numSites());
   SiteSet unoccupied(sites_.numSites());
   for (int s = 0; s < sites_.numSites(); ++s) {
-    if (!occupied.test(s) && sites_.site(s) && s / 2 != object) unoccupied.set(s);
+    if (!occupied.test(s) && sites_.site(s) && ObjectSites::objectOf(s) != object) unoccupied.set(s);
   }
   for (std::size_t i = 1; i < path.size(); ++i) {
     const SiteSet piece = map.touchedSites(path[i - 1], path[i], unoccupied);
@@ -423,8 +438,9 @@ std::vector<int> MotionHypergraph::verticesOf(int task_vertex) const {
 
 bool MotionHypergraph::neverPlaceable(int object) {
   const ScopedTimer timer(construction_seconds_);
-  // every robot and grasp the object may be held in: picked, or handed over from a robot
-  // holding it (the receiver's grasp is one of handoffGrasps of the giver's), and so on
+  // every robot and grasp the object may be held in: picked (at its start, or where it may be
+  // set aside), or handed over from a robot holding it (the receiver's grasp is one of
+  // handoffGrasps of the giver's), and so on
   std::vector<std::pair<int, Grasp>> held;
   const auto hold = [&](int robot, const Grasp& grasp) {
     const auto same = [&](const auto& other) { return other.first == robot && sameGrasp(grasp, other.second); };
@@ -434,7 +450,7 @@ bool MotionHypergraph::neverPlaceable(int object) {
   for (std::size_t h = 0; h < task_space_->numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = task_space_->hyperarcs()[h];
     if (arc.object != object) continue;
-    if (arc.kind == TransitionKind::kPlace) places.push_back(&arc);
+    if (arc.kind == TransitionKind::kPlace && arc.rest_pose == RestPose::kGoal) places.push_back(&arc);
     if (arc.kind == TransitionKind::kHandoff) handoffs.push_back(&arc);
     if (arc.kind != TransitionKind::kPick) continue;
     for (const int id : transitionsOf(static_cast<int>(h), -1)) hold(arc.robot, *transition(id).sample.grasp_after);
@@ -458,7 +474,8 @@ bool MotionHypergraph::neverPlaceable(int object) {
 bool MotionHypergraph::hasPlaceSample(int object) const {
   return std::any_of(transitions_of_.begin(), transitions_of_.end(), [&](const auto& entry) {
     const TransitionHyperarc& arc = task_space_->hyperarcs().at(static_cast<std::size_t>(entry.first.first));
-    return arc.kind == TransitionKind::kPlace && arc.object == object && !entry.second.empty();
+    return arc.kind == TransitionKind::kPlace && arc.rest_pose == RestPose::kGoal && arc.object == object &&
+           !entry.second.empty();
   });
 }
 

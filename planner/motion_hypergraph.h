@@ -4,7 +4,7 @@
 //
 //  motion vertices      a task-space vertex with a configuration: a robot alone or holding an
 //                       object (the arm configuration, and for holding the grasp), an object
-//                       resting at a site (its start or goal pose). The vertex map lists the
+//                       resting at a site (its start, goal or set-aside pose). The vertex map lists the
 //                       motion vertices of each task-space vertex.
 //  transition hyperarcs sampled instances of H_T's pick, place and handoff hyperarcs, each
 //                       carrying the timed motions of its robots (TransitionSampler).
@@ -106,6 +106,11 @@ class MotionHypergraph {
   /// and std::runtime_error when a goal region has no room (objectSites).
   MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space, std::uint64_t seed,
                    const RepresentationSettings& settings = {});
+  /// The same on given object sites (objectSites(world) and, with set-aside hyperarcs in
+  /// `task_space`, the set-aside sites of their objects). Throws std::invalid_argument when a
+  /// set-aside hyperarc's object has no set-aside site.
+  MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space, ObjectSites sites,
+                   std::uint64_t seed, const RepresentationSettings& settings = {});
   ~MotionHypergraph();
 
   const core::LoadedWorld& world() const { return *world_; }
@@ -182,14 +187,16 @@ class MotionHypergraph {
 
   /// True when `object` can never be placed at its goal: no robot with a place hyperarc for it
   /// has a place sample for any grasp that robot could hold it in — one of its own pick
-  /// samples' or, through a handoff hyperarc from a robot that could hold it, a receiver grasp
+  /// samples' (at the start or the set-aside site, as if it could always be set aside) or,
+  /// through a handoff hyperarc from a robot that could hold it, a receiver grasp
   /// of that robot's grasp (TransitionSampler::handoffGrasps), and so on. Picks and places are
   /// deterministic (sampled per grasp, not drawn) and receiver grasps a fixed list, so no later
   /// round can add one: the problem is infeasible (e.g. a box with only one face pair narrow
   /// enough for the gripper, which one robot picks and only another can place: no handoff can
   /// give the receiver a different face pair). Adds nothing to the graph.
   bool neverPlaceable(int object);
-  /// True when some place hyperarc of `object` has a sample (for any grasp asked for so far).
+  /// True when some place hyperarc of `object` into its goal has a sample (for any grasp asked
+  /// for so far).
   bool hasPlaceSample(int object) const;
 
   /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <tuple>
 #include <stdexcept>
 #include <string>
 
@@ -9,10 +11,15 @@ namespace dashbed::planner {
 
 std::optional<RestingObject> ObjectSites::site(int index) const {
   if (index < 0 || index >= numSites()) throw std::invalid_argument("site " + std::to_string(index) + " out of range");
-  const int object = index / 2;
-  if (index % 2 == 0) return RestingObject{object, start[object]};
-  if (!goal[object]) return std::nullopt;
-  return RestingObject{object, *goal[object]};
+  const int object = objectOf(index);
+  if (index == startSite(object)) return RestingObject{object, start[object]};
+  if (index == goalSite(object)) return goal[object] ? std::optional(RestingObject{object, *goal[object]}) : std::nullopt;
+  const bool set_aside = static_cast<std::size_t>(object) < aside.size() && aside[object];
+  return set_aside ? std::optional(RestingObject{object, *aside[object]}) : std::nullopt;
+}
+
+bool ObjectSites::anyAside() const {
+  return std::any_of(aside.begin(), aside.end(), [](const std::optional<core::Pose>& pose) { return pose.has_value(); });
 }
 
 std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size) {
@@ -137,6 +144,7 @@ std::optional<ObjectSites> assignSites(const core::LoadedWorld& loaded, const st
     sites.goal.push_back(*slot);
     given[r].push_back({*slot, object.size});
   }
+  sites.aside.resize(sites.start.size());
   return sites;
 }
 
@@ -171,6 +179,123 @@ core::ReachMap placementReach(const core::LoadedWorld& world, const ObjectSites&
     }
   }
   return reach;
+}
+
+namespace {
+
+/// Height above an object that a gripper picking it from above takes up: 157 mm from the UR
+/// tool flange to the Hand-E's fingertips (I/O coupling 11 mm + 99 mm + 46.5 mm fingertip,
+/// reference/ur5e_hande.yaml) plus the 100 mm straight approach, rounded [m].
+constexpr double kGripperAbove = 0.25;
+
+/// UR5e base radius (149 mm base diameter, Universal Robots UR5e data sheet) plus 15 mm [m].
+constexpr double kRobotBaseRadius = 0.09;
+
+/// The horizontal distance from p_W to an upright box (X_WB its centre, yawed only) when the
+/// box's height span meets [z_low, z_high], else infinity.
+double horizontalGap(const core::Pose& X_WB, const Eigen::Vector3d& size, const Eigen::Vector3d& p_W, double z_low,
+                     double z_high) {
+  const double z = X_WB.translation().z();
+  if (z + size.z() / 2 <= z_low + 1e-6 || z - size.z() / 2 >= z_high) return std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d p_B = X_WB.inverse(Eigen::Isometry) * p_W;
+  const Eigen::Vector2d outside = (p_B.head<2>().cwiseAbs() - size.head<2>() / 2).cwiseMax(0.0);
+  return outside.norm();
+}
+
+/// Radius of the circle around an object's footprint, for an orientation R_WO.
+double footprintRadius(const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size) {
+  const Eigen::Vector3d extent = (R_WO * size.asDiagonal()).cwiseAbs().rowwise().sum();
+  return extent.head<2>().norm() / 2;
+}
+
+/// The stable surface an object rests on (bottom within 5 mm of it, centre over it), or null.
+const core::StableSurface* surfaceUnder(const core::World& world, const core::Pose& X_WO, const Eigen::Vector3d& size) {
+  const double half_height = ((X_WO.linear() * size.asDiagonal()).cwiseAbs().rowwise().sum()).z() / 2;
+  for (const core::StableSurface& surface : world.surfaces) {
+    const Eigen::Vector3d p_S = surface.X_WS.inverse(Eigen::Isometry) * X_WO.translation();
+    if (std::abs(p_S.x()) <= surface.size.x() / 2 && std::abs(p_S.y()) <= surface.size.y() / 2 &&
+        std::abs(p_S.z() - half_height) <= 0.005) {
+      return &surface;
+    }
+  }
+  return nullptr;
+}
+
+}  // namespace
+
+std::vector<int> setAsideSites(const core::LoadedWorld& loaded, ObjectSites& sites, const std::vector<int>& objects) {
+  const core::World& world = *loaded.world;
+  constexpr double kPitch = 0.03;  // candidate spacing on the surface [m]
+  std::vector<int> given;
+  for (const int o : objects) {
+    const core::ObjectSpec& object = world.objects[static_cast<std::size_t>(o)];
+    const core::Pose& X_start = sites.start[static_cast<std::size_t>(o)];
+    const core::StableSurface* surface = surfaceUnder(world, X_start, object.size);
+    if (surface == nullptr) continue;
+    const double radius = footprintRadius(X_start.linear(), object.size);
+    const double bottom = X_start.translation().z() - ((X_start.linear() * object.size.asDiagonal()).cwiseAbs().rowwise().sum()).z() / 2;
+    // fixtures and regions count from the object's bottom up to where a gripper coming from above
+    // would be
+    const double top = 2 * X_start.translation().z() - bottom + kGripperAbove;
+    // the room around p_W: to the other sites, the regions and fixtures at its height, the robots' bases
+    const auto room = [&](const Eigen::Vector3d& p_W) {
+      double least = std::numeric_limits<double>::infinity();
+      for (int s = 0; s < sites.numSites(); ++s) {
+        const std::optional<RestingObject> other = sites.site(s);
+        if (!other) continue;
+        const Eigen::Vector3d d = other->X_WO.translation() - p_W;
+        const Eigen::Vector3d& other_size = world.objects[static_cast<std::size_t>(other->object)].size;
+        least = std::min(least, d.head<2>().norm() - footprintRadius(other->X_WO.linear(), other_size) - radius);
+      }
+      for (const core::Region& region : world.regions) {
+        core::Pose X_WB = region.X_WR;
+        X_WB.translation() += region.X_WR.linear().col(2) * (region.size.z() / 2);
+        least = std::min(least, horizontalGap(X_WB, region.size, p_W, bottom, top) - radius);
+      }
+      for (const core::FixtureSpec& fixture : world.fixtures) {
+        for (const core::Box& box : fixture.boxes) least = std::min(least, horizontalGap(box.X_WB, box.size, p_W, bottom, top) - radius);
+      }
+      for (const core::RobotSpec& robot : world.robots) {
+        least = std::min(least, (robot.X_WBase.translation() - p_W).head<2>().norm() - kRobotBaseRadius - radius);
+      }
+      return least;
+    };
+    const auto reached = [&](const core::Pose& X_WO) {
+      return std::any_of(loaded.reach.start[static_cast<std::size_t>(o)].begin(),
+                         loaded.reach.start[static_cast<std::size_t>(o)].end(),
+                         [&](int r) { return core::reachesBox((*loaded.robots)[static_cast<std::size_t>(r)], X_WO, object.size); });
+    };
+    // candidates on a grid over the surface, best first: room enough all round and nearest to
+    // the start, else the roomiest
+    struct Spot {
+      bool roomy;
+      double key;  // distance to the start when roomy, else minus the room
+      core::Pose X_WO;
+    };
+    std::vector<Spot> spots;
+    const int nx = static_cast<int>(std::floor((surface->size.x() - 2 * radius) / kPitch)) + 1;
+    const int ny = static_cast<int>(std::floor((surface->size.y() - 2 * radius) / kPitch)) + 1;
+    for (int iy = 0; iy < ny; ++iy) {
+      for (int ix = 0; ix < nx; ++ix) {
+        const Eigen::Vector3d p_S((ix - (nx - 1) / 2.0) * kPitch, (iy - (ny - 1) / 2.0) * kPitch, 0.0);
+        Eigen::Vector3d p_W = surface->X_WS * p_S;
+        p_W.z() = X_start.translation().z();
+        const double r = room(p_W);
+        if (r < kOpenFingerReach) continue;
+        core::Pose X_WO = X_start;
+        X_WO.translation() = p_W;
+        const bool roomy = r >= kAsideRoom;
+        spots.push_back({roomy, roomy ? (p_W - X_start.translation()).norm() : -r, X_WO});
+      }
+    }
+    std::stable_sort(spots.begin(), spots.end(),
+                     [](const Spot& a, const Spot& b) { return std::tie(b.roomy, a.key) < std::tie(a.roomy, b.key); });
+    const auto spot = std::find_if(spots.begin(), spots.end(), [&](const Spot& s) { return reached(s.X_WO); });
+    if (spot == spots.end()) continue;
+    sites.aside[static_cast<std::size_t>(o)] = spot->X_WO;
+    given.push_back(o);
+  }
+  return given;
 }
 
 }  // namespace dashbed::planner

@@ -13,6 +13,11 @@
 // goal region (restsIn) has no goal site: the plan leaves it where it is (the simulation's
 // goal check still wants it there at the end), and the other objects' slots keep clear of it;
 // unless that leaves a region no room for the objects sent there: then every object gets a slot.
+//
+// Set-aside sites: an object may also be given a spot to be set down at for a while, picked up
+// again later and carried on to its goal (an intermediate placement). The planner gives one to
+// an object standing where some other object's every pick reaches over it (setAsideSites): a
+// shelf item in the way of the one behind it, which must go in after that one.
 
 #include <optional>
 #include <vector>
@@ -36,14 +41,22 @@ struct ObjectSites {
   std::vector<core::Pose> start;                ///< [object] X_WO at its start
   std::vector<std::optional<core::Pose>> goal;  ///< [object] X_WO of its goal placement; none without a goal
   std::vector<int> goal_region;                 ///< [object] index into World::regions, or -1
+  /// [object] X_WO where it may be set aside (none by default; empty: none for any object)
+  std::vector<std::optional<core::Pose>> aside;
 
   int numObjects() const { return static_cast<int>(start.size()); }
-  /// Sites are numbered 2 o (object o at its start) and 2 o + 1 (at its goal).
-  int numSites() const { return 2 * numObjects(); }
-  static int startSite(int object) { return 2 * object; }
-  static int goalSite(int object) { return 2 * object + 1; }
-  /// The object resting at a site; std::nullopt for the goal site of an object without a goal.
+  /// Sites are numbered 3 o (object o at its start), 3 o + 1 (at its goal) and 3 o + 2 (set
+  /// aside).
+  int numSites() const { return 3 * numObjects(); }
+  static int startSite(int object) { return 3 * object; }
+  static int goalSite(int object) { return 3 * object + 1; }
+  static int asideSite(int object) { return 3 * object + 2; }
+  static int objectOf(int site) { return site / 3; }
+  /// The object resting at a site; std::nullopt for a goal or set-aside site the object does
+  /// not have.
   std::optional<RestingObject> site(int index) const;
+  /// The objects with a set-aside site.
+  bool anyAside() const;
 };
 
 /// Object-centre positions for objects of `size` side by side in a region, row by row, at
@@ -63,5 +76,18 @@ ObjectSites objectSites(const core::LoadedWorld& world);
 /// its goal site rather than the region's centre (core::ReachMap::goal). A slot off-centre may
 /// be in reach of a robot that misses the centre, and out of reach of one that reaches it.
 core::ReachMap placementReach(const core::LoadedWorld& world, const ObjectSites& sites);
+
+/// Least room a set-aside spot keeps around the object, to every other site, the regions, the
+/// fixtures and the robots' bases, when the surface has such a spot (else the roomiest is
+/// taken) [m].
+inline constexpr double kAsideRoom = 0.12;
+
+/// Gives each of `objects` a set-aside site (ObjectSites::aside): a spot on the stable surface it
+/// starts on, in its start orientation, that a robot picking it at its start reaches, out of
+/// every other site (start, goal, set-aside), every goal region, fixture and robot base by the
+/// open gripper's reach. Of those, the nearest to its start with kAsideRoom all round, else the
+/// roomiest. An object without such a spot (e.g. no surface has room) gets none. Returns the
+/// objects given one.
+std::vector<int> setAsideSites(const core::LoadedWorld& world, ObjectSites& sites, const std::vector<int>& objects);
 
 }  // namespace dashbed::planner

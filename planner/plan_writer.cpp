@@ -84,7 +84,9 @@ core::Plan writePlan(const MotionHypergraph& graph, const TransitionHistory& his
     action.robot = world.robots[arc.robot].name;
     if (arc.kind == TransitionKind::kHandoff) action.receiver = world.robots[arc.receiver].name;
     action.object = world.objects[sample.object].name;
-    if (arc.kind == TransitionKind::kPlace) action.region = world.regions[graph.sites().goal_region[sample.object]].name;
+    if (arc.kind == TransitionKind::kPlace && arc.rest_pose == RestPose::kGoal) {
+      action.region = world.regions[graph.sites().goal_region[sample.object]].name;
+    }
     action.start = toSeconds(start + sample.action_start);
     action.end = toSeconds(start + sample.action_end);
     plan.actions.push_back(action);

@@ -317,8 +317,10 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
                                   const std::vector<ScheduleSegment>& segments, SequentialSteps steps) {
   std::vector<Edge> edges;
   const int n = static_cast<int>(segments.size());
-  // each object's pick and place segment (the transition parts)
-  std::vector<int> pick_of(history.objects.size(), -1), place_of(history.objects.size(), -1);
+  // each object's pick and place segment (the transition parts), and where it is set aside,
+  // its segments setting it down and taking it up again
+  const std::size_t m = history.objects.size();
+  std::vector<int> pick_of(m, -1), place_of(m, -1), set_down_of(m, -1), pick_up_of(m, -1);
   std::vector<std::vector<int>> step_parts(history.steps.size());
   for (int s = 0; s < n; ++s) {
     if (s + 1 < n && segments[s + 1].robot == segments[s].robot) {
@@ -332,8 +334,9 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
     if (segments[s].motion == nullptr) continue;
     const TransitionSample& sample = graph.transition(history.steps[segments[s].step].transition).sample;
     step_parts[segments[s].step].push_back(s);
-    if (sample.kind == TransitionKind::kPick) pick_of[sample.object] = s;
-    if (sample.kind == TransitionKind::kPlace) place_of[sample.object] = s;
+    const bool aside = graph.taskSpace().hyperarcs().at(static_cast<std::size_t>(sample.hyperarc)).rest_pose == RestPose::kAside;
+    if (sample.kind == TransitionKind::kPick) (aside ? pick_up_of : pick_of)[sample.object] = s;
+    if (sample.kind == TransitionKind::kPlace) (aside ? set_down_of : place_of)[sample.object] = s;
   }
   for (const std::vector<int>& parts : step_parts) {  // a handoff's robots start together
     for (std::size_t k = 1; k < parts.size(); ++k) {
@@ -352,6 +355,19 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
       if (touches.test(ObjectSites::goalSite(b)) && place_of[b] >= 0 && place_of[b] != s) {
         edges.push_back({s, place_of[b], seg.duration});
       }
+      // through the set-aside site: before it is set down there (as the history has it: by its
+      // step, or folding at the start), else after it is taken up again
+      const int down = set_down_of[b], up = pick_up_of[b];
+      if (touches.test(ObjectSites::asideSite(b)) && down >= 0 && s != down && s != up) {
+        const bool before = seg.step >= 0 ? seg.step <= segments[down].step : seg.phase == -1;
+        if (before) edges.push_back({s, down, seg.duration});
+        if (!before && up >= 0) edges.push_back({up, s, segments[up].duration});
+      }
+    }
+  }
+  for (std::size_t b = 0; b < m; ++b) {  // set down before it is taken up again
+    if (set_down_of[b] >= 0 && pick_up_of[b] >= 0) {
+      edges.push_back({set_down_of[b], pick_up_of[b], segments[set_down_of[b]].duration});
     }
   }
   if (history.sequential && steps == SequentialSteps::kOneAfterAnother) {

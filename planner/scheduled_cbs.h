@@ -12,7 +12,9 @@
 //  - both robots of a handoff start its transition together;
 //  - scheduling constraints from the object sites: a motion through an object's start site
 //    starts after that object's pick is over; a motion through its goal site ends before its
-//    place begins;
+//    place begins; an object set aside is taken up again after it has been set down, and a
+//    motion through its set-aside site runs before it is set down or after it is taken up
+//    again, as in the history;
 //  - a sequential history (TransitionHistory::sequential) with its steps one after another
 //    (SequentialSteps): every segment of a step's phase (ScheduleSegment::phase) starts after
 //    every segment of the phase before has ended, so the robots of one step move while the

@@ -13,17 +13,18 @@ struct Action {
   int robot;
   int object;
   int receiver;
+  bool aside = false;  ///< at the object's set-aside site
 };
 
 void checkRobotList(const std::vector<int>& robots, int num_robots, const char* field, std::size_t object) {
   std::vector<bool> seen(static_cast<std::size_t>(num_robots), false);
   for (const int r : robots) {
     if (r < 0 || r >= num_robots) {
-      throw std::invalid_argument("AllowedTransitions: reach." + std::string(field) + "[" + std::to_string(object) +
+      throw std::invalid_argument("AllowedTransitions: " + std::string(field) + "[" + std::to_string(object) +
                                   "] names robot " + std::to_string(r) + " of " + std::to_string(num_robots));
     }
     if (seen[r]) {
-      throw std::invalid_argument("AllowedTransitions: reach." + std::string(field) + "[" + std::to_string(object) +
+      throw std::invalid_argument("AllowedTransitions: " + std::string(field) + "[" + std::to_string(object) +
                                   "] names robot " + std::to_string(r) + " twice");
     }
     seen[r] = true;
@@ -79,9 +80,14 @@ void AllowedTransitions::validate() const {
                                 std::to_string(objects) + "), got " + std::to_string(reach.start.size()) + " and " +
                                 std::to_string(reach.goal.size()));
   }
+  if (!aside.empty() && aside.size() != m) {
+    throw std::invalid_argument("AllowedTransitions: aside needs no entry or one per object (" + std::to_string(objects) +
+                                "), got " + std::to_string(aside.size()));
+  }
   for (std::size_t o = 0; o < m; ++o) {
-    checkRobotList(reach.start[o], robots, "start", o);
-    checkRobotList(reach.goal[o], robots, "goal", o);
+    checkRobotList(reach.start[o], robots, "reach.start", o);
+    checkRobotList(reach.goal[o], robots, "reach.goal", o);
+    if (!aside.empty()) checkRobotList(aside[o], robots, "aside", o);
   }
   if (handoff.size() != n) {
     throw std::invalid_argument("AllowedTransitions: the handoff matrix needs " + std::to_string(robots) +
@@ -102,7 +108,7 @@ TaskSpaceHypergraph::TaskSpaceHypergraph(const AllowedTransitions& allowed)
 
 TaskSpaceHypergraph::TaskSpaceHypergraph(int robots, int objects, const core::ReachMap& reach,
                                          const std::vector<std::vector<bool>>& overlap)
-    : TaskSpaceHypergraph(AllowedTransitions{robots, objects, reach, overlap}) {}
+    : TaskSpaceHypergraph(AllowedTransitions{robots, objects, reach, overlap, {}}) {}
 
 TaskSpaceHypergraph::TaskSpaceHypergraph(const AllowedTransitions& allowed, std::vector<std::string> robot_names,
                                          std::vector<std::string> object_names)
@@ -113,6 +119,12 @@ TaskSpaceHypergraph::TaskSpaceHypergraph(const AllowedTransitions& allowed, std:
 
 TaskSpaceHypergraph TaskSpaceHypergraph::fromWorld(const core::World& world, const core::RobotSet& robots,
                                                    const core::ReachMap& reach) {
+  return fromWorld(world, robots, reach, {});
+}
+
+TaskSpaceHypergraph TaskSpaceHypergraph::fromWorld(const core::World& world, const core::RobotSet& robots,
+                                                   const core::ReachMap& reach,
+                                                   const std::vector<std::vector<int>>& aside) {
   if (robots.size() != world.robots.size()) {
     throw std::invalid_argument("TaskSpaceHypergraph::fromWorld: the robot set has " + std::to_string(robots.size()) +
                                 " robots, the world " + std::to_string(world.robots.size()));
@@ -121,6 +133,7 @@ TaskSpaceHypergraph TaskSpaceHypergraph::fromWorld(const core::World& world, con
   allowed.robots = static_cast<int>(robots.size());
   allowed.objects = static_cast<int>(world.objects.size());
   allowed.reach = reach;
+  allowed.aside = aside;
   allowed.handoff.assign(robots.size(), std::vector<bool>(robots.size(), false));
   // a handoff zone is a symmetric property: ask once per pair
   for (std::size_t a = 0; a < robots.size(); ++a) {
@@ -193,6 +206,20 @@ void TaskSpaceHypergraph::build() {
     }
   }
 
+  // set-asides and pick-ups again, by robots that can hold the object anyway (they add no
+  // vertex: the object rests, the robot holds it)
+  for (const TransitionKind kind : {TransitionKind::kPlace, TransitionKind::kPick}) {
+    for (int r = 0; r < n && !allowed_.aside.empty(); ++r) {
+      for (int o = 0; o < m; ++o) {
+        const auto& robots = allowed_.aside[o];
+        if (obtainable[holdingIndex(r, o)] && std::find(robots.begin(), robots.end(), r) != robots.end()) {
+          candidates.push_back({kind, r, o, -1, true});
+          added.push_back(true);
+        }
+      }
+    }
+  }
+
   // canonical vertex ids
   vertices_.clear();
   for (int r = 0; r < n; ++r) vertices_.push_back({TaskElementKind::kRobotAlone, r, -1});
@@ -224,12 +251,12 @@ void TaskSpaceHypergraph::build() {
       case TransitionKind::kPick:
         arc.tail = sorted({robotAloneVertex(a.robot), objectRestingVertex(a.object)});
         arc.head = {holdingVertex(a.robot, a.object)};
-        arc.rest_pose = RestPose::kStart;
+        arc.rest_pose = a.aside ? RestPose::kAside : RestPose::kStart;
         break;
       case TransitionKind::kPlace:
         arc.tail = {holdingVertex(a.robot, a.object)};
         arc.head = sorted({robotAloneVertex(a.robot), objectRestingVertex(a.object)});
-        arc.rest_pose = RestPose::kGoal;
+        arc.rest_pose = a.aside ? RestPose::kAside : RestPose::kGoal;
         break;
       case TransitionKind::kHandoff:
         arc.tail = sorted({holdingVertex(a.robot, a.object), robotAloneVertex(a.receiver)});
@@ -297,7 +324,7 @@ std::string TaskSpaceHypergraph::hyperarcName(int hyperarc) const {
   const TransitionHyperarc& e = hyperarcs_.at(hyperarc);
   std::string name = std::string(toString(e.kind)) + "(" + robot_names_[e.robot] + ",";
   if (e.kind == TransitionKind::kHandoff) name += robot_names_[e.receiver] + ",";
-  return name + object_names_[e.object] + ")";
+  return name + object_names_[e.object] + (e.rest_pose == RestPose::kAside ? ",aside)" : ")");
 }
 
 }  // namespace dashbed::planner

@@ -19,8 +19,11 @@
 // mn + m + n and mn^2 + mn) and put the pose on the hyperarc instead: a pick takes the object
 // from its start pose, a place puts it into its goal region (TransitionHyperarc::rest_pose).
 // Hence a pick hyperarc exists only for robots reaching the object's start and a place hyperarc
-// only for robots reaching its goal. Intermediate placements (regrasps, buffer poses) are not
-// part of this action space.
+// only for robots reaching its goal. An object may also have a set-aside site (an intermediate
+// placement, ObjectSites::aside): then a robot that can hold it and reaches that site has a
+// place hyperarc setting it aside and a pick hyperarc taking it up again, both with
+// RestPose::kAside and the same two vertices (the object resting, the robot holding it).
+// Regrasps are not part of this action space.
 //
 // Construction follows Alg. 1: Decompose(T_init) gives every robot alone and every object
 // resting; ExpandHypergraph (breadth first) then adds every allowed transition whose tail
@@ -58,7 +61,7 @@ struct TaskSpaceVertex {
 enum class TransitionKind { kPick, kPlace, kHandoff };
 
 /// The stable pose a pick or place acts on; kNone for handoffs (held in the air).
-enum class RestPose { kNone, kStart, kGoal };
+enum class RestPose { kNone, kStart, kGoal, kAside };
 
 /// A transition hyperarc <Tail, Head>. Tail and head hold vertex ids in ascending order.
 struct TransitionHyperarc {
@@ -81,6 +84,9 @@ struct AllowedTransitions {
   /// handoff[giver][receiver]: the two robots' workspaces overlap (robots x robots, diagonal
   /// ignored).
   std::vector<std::vector<bool>> handoff;
+  /// aside[o]: robots that may set object o aside at its set-aside site and pick it up there
+  /// again (those of them that can hold it). Empty (no set-aside sites) or sized `objects`.
+  std::vector<std::vector<int>> aside;
 
   /// Everything reachable and every pair of robots overlapping (the Representation Analysis
   /// upper bound).
@@ -108,6 +114,9 @@ class TaskSpaceHypergraph {
   /// std::invalid_argument when `reach` does not match the world.
   static TaskSpaceHypergraph fromWorld(const core::World& world, const core::RobotSet& robots,
                                        const core::ReachMap& reach);
+  /// The same with set-aside hyperarcs: aside[o] the robots reaching object o's set-aside site.
+  static TaskSpaceHypergraph fromWorld(const core::World& world, const core::RobotSet& robots,
+                                       const core::ReachMap& reach, const std::vector<std::vector<int>>& aside);
 
   int numRobots() const { return allowed_.robots; }
   int numObjects() const { return allowed_.objects; }
@@ -116,8 +125,9 @@ class TaskSpaceHypergraph {
   /// Vertices in canonical order: robots alone (by robot), objects resting (by object), then
   /// the obtainable robot-holding-object elements ordered by (robot, object).
   const std::vector<TaskSpaceVertex>& vertices() const { return vertices_; }
-  /// Hyperarcs in canonical order: picks by (robot, object), places by (robot, object), then
-  /// handoffs by (object, giver, receiver).
+  /// Hyperarcs in canonical order: picks by (robot, object), places by (robot, object),
+  /// handoffs by (object, giver, receiver), then set-asides and pick-ups from there by (robot,
+  /// object).
   const std::vector<TransitionHyperarc>& hyperarcs() const { return hyperarcs_; }
 
   std::size_t numVertices() const { return vertices_.size(); }
@@ -147,7 +157,8 @@ class TaskSpaceHypergraph {
 
   /// "r0", "o1" (resting), "r0:o1" (r0 holding o1).
   std::string vertexName(int vertex) const;
-  /// "pick(r0,o1)", "place(r1,o1)", "handoff(r0,r1,o1)" (giver, receiver, object).
+  /// "pick(r0,o1)", "place(r1,o1)", "handoff(r0,r1,o1)" (giver, receiver, object);
+  /// "place(r1,o1,aside)", "pick(r0,o1,aside)" at the set-aside site.
   std::string hyperarcName(int hyperarc) const;
 
  private:

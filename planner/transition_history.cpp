@@ -18,6 +18,7 @@ SiteSet TransitionHistory::occupied(int sites) const {
     const int object = static_cast<int>(o);
     if (objects[o].place == ObjectPlace::kStart) set.set(ObjectSites::startSite(object));
     if (objects[o].place == ObjectPlace::kGoal) set.set(ObjectSites::goalSite(object));
+    if (objects[o].place == ObjectPlace::kAside) set.set(ObjectSites::asideSite(object));
   }
   return set;
 }

@@ -16,7 +16,9 @@
 
 namespace dashbed::planner {
 
-enum class ObjectPlace { kStart, kHeld, kGoal };
+/// Where an object is: at its start, held, at its goal, or set aside (at its set-aside site, to
+/// be picked up again).
+enum class ObjectPlace { kStart, kHeld, kGoal, kAside };
 
 /// One transition hyperarc of a history and the move hyperarcs leading each of its robots to
 /// the transition's start.
@@ -39,6 +41,7 @@ struct TransitionHistory {
     ObjectPlace place = ObjectPlace::kStart;
     int holder = -1;
     Millis since = 0;  ///< the object reached its current place
+    bool set_aside = false;  ///< it has been set aside (once at most)
   };
 
   std::vector<RobotState> robots;
@@ -63,7 +66,7 @@ struct TransitionHistory {
   /// The virtual source: robots alone at home, objects at their starts.
   static TransitionHistory source(const MotionHypergraph& graph);
 
-  /// Sites occupied now: objects at their start or goal.
+  /// Sites occupied now: objects at their start, goal or set-aside site.
   SiteSet occupied(int sites) const;
   /// The goal sites of the objects placed so far (they stay there).
   SiteSet filledGoals(int sites) const;

@@ -716,7 +716,10 @@ std::vector<TransitionSample> TransitionSampler::pick(int hyperarc) {
   const TransitionHyperarc& arc = hyperarcOf(*task_space_, hyperarc, TransitionKind::kPick);
   Context c{*world_->world, *scene_, *sites_, settings_, *checker_};
   const Arm arm = armOf(*world_, arc.robot);
-  Part p{hyperarc, &arm, arc.object, sites_->start[static_cast<std::size_t>(arc.object)], Grasp{}};
+  const std::size_t o = static_cast<std::size_t>(arc.object);
+  const std::optional<Pose>& rest = arc.rest_pose == RestPose::kAside ? sites_->aside[o] : sites_->start[o];
+  if (!rest) return {};
+  Part p{hyperarc, &arm, arc.object, *rest, Grasp{}};
   const Vector3d& size = c.world.objects[static_cast<std::size_t>(arc.object)].size;
   const Relabelled U = uprightFrame(p.X_WO.linear(), size);
   std::vector<TransitionSample> samples;
@@ -730,15 +733,19 @@ std::vector<TransitionSample> TransitionSampler::pick(int hyperarc) {
 std::vector<TransitionSample> TransitionSampler::place(int hyperarc, const Grasp& held) {
   const TransitionHyperarc& arc = hyperarcOf(*task_space_, hyperarc, TransitionKind::kPlace);
   const std::size_t o = static_cast<std::size_t>(arc.object);
-  const std::optional<Pose>& goal = sites_->goal[o];
-  if (!goal) return {};  // no goal site: nothing to place into
+  const bool aside = arc.rest_pose == RestPose::kAside;
+  const std::optional<Pose>& site = aside ? sites_->aside[o] : sites_->goal[o];
+  if (!site) return {};  // no goal (set-aside) site: nothing to place into
   Context c{*world_->world, *scene_, *sites_, settings_, *checker_};
   const Arm arm = armOf(*world_, arc.robot);
-  Part p{hyperarc, &arm, arc.object, *goal, held};
-  const Pose& X_WR = c.world.regions[static_cast<std::size_t>(sites_->goal_region[o])].X_WR;
-  const double region_yaw = std::atan2(X_WR.linear()(1, 0), X_WR.linear()(0, 0));
+  Part p{hyperarc, &arm, arc.object, *site, held};
+  std::vector<Matrix3d> orientations{site->linear()};  // set aside as it stood at its start: picked up so again
+  if (!aside) {
+    const Pose& X_WR = c.world.regions[static_cast<std::size_t>(sites_->goal_region[o])].X_WR;
+    orientations = placeOrientations(c.world.objects[o].size, site->linear(), std::atan2(X_WR.linear()(1, 0), X_WR.linear()(0, 0)));
+  }
   std::vector<TransitionSample> samples;
-  for (const Matrix3d& R_WO : placeOrientations(c.world.objects[o].size, goal->linear(), region_yaw)) {
+  for (const Matrix3d& R_WO : orientations) {
     p.X_WO.linear() = R_WO;
     if (auto sample = placeSample(c, p)) samples.push_back(std::move(*sample));
   }

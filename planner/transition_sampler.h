@@ -136,13 +136,14 @@ class TransitionSampler {
   TransitionSampler(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
                     const CollisionScene& scene, const ObjectSites& sites, const TransitionSettings& settings = {});
 
-  /// Pick samples of pick hyperarc `hyperarc` (object at its start site): one per grasp that
+  /// Pick samples of pick hyperarc `hyperarc` (object at its start, or set-aside, site): one per grasp that
   /// passes the checks, IK solution nearest the robot's home configuration (a side grasp from
   /// above where that touches fewer sites). Deterministic.
   std::vector<TransitionSample> pick(int hyperarc);
 
   /// Place samples of place hyperarc `hyperarc` (object into its goal site) for a robot holding
-  /// the object in `held`: one per fitting resting orientation that passes. Deterministic.
+  /// the object in `held`: one per fitting resting orientation that passes; into its set-aside
+  /// site, in the orientation it started in. Deterministic.
   std::vector<TransitionSample> place(int hyperarc, const Grasp& held);
 
   /// Up to `count` handoff samples of handoff hyperarc `hyperarc` for a giver holding the

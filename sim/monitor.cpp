@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <optional>
 #include <set>
@@ -40,6 +41,10 @@ std::string fmt(double value, int precision = 4) {
   return out.str();
 }
 
+/// An object set aside rests on a surface when its bottom is this near it: more than the
+/// world loader's 2 mm for a start pose, for the contact's give in simulation [m].
+constexpr double kSurfaceContact = 0.005;
+
 double rotationAngle(const Eigen::Matrix3d& R) { return Eigen::AngleAxisd(R).angle(); }
 
 /// Smallest angle between any object axis and the world vertical.
@@ -49,6 +54,20 @@ double tiltFromFlat(const Pose& X_WO) {
     best = std::min(best, std::acos(std::min(1.0, std::abs(X_WO.linear().col(k).z()))));
   }
   return best;
+}
+
+/// How far the bottom of an object at X_WO lies from the nearest stable surface under its
+/// centre [m], or std::nullopt when no surface is under it.
+std::optional<double> gapToSurface(const core::World& world, const Pose& X_WO, const Eigen::Vector3d& size) {
+  const double bottom = X_WO.translation().z() - (X_WO.linear() * size.asDiagonal()).cwiseAbs().rowwise().sum().z() / 2;
+  std::optional<double> gap;
+  for (const core::StableSurface& surface : world.surfaces) {
+    const Eigen::Vector3d p_S = surface.X_WS.inverse(Eigen::Isometry) * X_WO.translation();
+    if (std::abs(p_S.x()) > surface.size.x() / 2 || std::abs(p_S.y()) > surface.size.y() / 2) continue;
+    const double here = std::abs(bottom - surface.X_WS.translation().z());
+    if (!gap || here < *gap) gap = here;
+  }
+  return gap;
 }
 
 struct HoldEpisode {
@@ -219,7 +238,9 @@ struct Monitor::State {
   static std::string actionId(const core::PlanAction& a) {
     switch (a.type) {
       case ActionType::kPick: return "pick " + a.object + " by " + a.robot;
-      case ActionType::kPlace: return "place " + a.object + " in " + a.region + " by " + a.robot;
+      case ActionType::kPlace:
+        return a.region.empty() ? "set aside " + a.object + " by " + a.robot
+                                : "place " + a.object + " in " + a.region + " by " + a.robot;
       case ActionType::kHandoff: return "handoff " + a.object + " from " + a.robot + " to " + a.receiver;
     }
     return "?";
@@ -528,6 +549,35 @@ Report Monitor::finish(const PlanExecutor& executor) {
     return outside <= 0.0;
   };
 
+  // a place without a region: the object is set aside on a stable surface, to be picked up
+  // again; it must come to rest there, flat on a face
+  const auto judgeSetAside = [&](const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) {
+    const std::string& object = a.action->object;
+    if (!a.placement_sampled) {
+      failures.push_back("set aside: the run ended before the settle time after release");
+      return;
+    }
+    const double tilt = tiltFromFlat(a.placement_pose);
+    const std::optional<double> gap =
+        gapToSurface(s.world, a.placement_pose, s.world.objects[static_cast<std::size_t>(a.object)].size);
+    r.measurements.push_back(measure("speed_after_settle", a.placement_speed, "m/s", checks.rest_speed, "<="));
+    r.measurements.push_back(measure("tilt", tilt, "rad", checks.upright_tolerance, "<="));
+    r.measurements.push_back(measure("gap_to_surface", gap.value_or(std::numeric_limits<double>::infinity()), "m",
+                                     kSurfaceContact, "<="));
+    if (a.placement_speed > checks.rest_speed) {
+      failures.push_back("set aside: " + object + " still moving at " + fmt(a.placement_speed) + " m/s > " +
+                         fmt(checks.rest_speed) + " m/s");
+    }
+    if (tilt > checks.upright_tolerance) {
+      failures.push_back("set aside: " + object + " tilted " + fmt(tilt) + " rad > " + fmt(checks.upright_tolerance) + " rad");
+    }
+    if (!gap || *gap > kSurfaceContact) {
+      failures.push_back("set aside: " + object + (gap ? " rests " + fmt(*gap * 1e3) + " mm off" : " is over no") +
+                         " stable surface");
+    }
+    if (failures.empty()) r.observed_end = *a.placement_time;
+  };
+
   for (const ActionTrack& a : s.actions) {
     const core::PlanAction& action = *a.action;
     ActionReport r;
@@ -619,6 +669,10 @@ Report Monitor::finish(const PlanExecutor& executor) {
           break;
         }
         r.observed_start = *a.command_time;
+        if (action.region.empty()) {  // set aside on a surface, to be picked up again
+          judgeSetAside(a, r, failures);
+          break;
+        }
         if (a.region < 0) {
           failures.push_back("placement: unknown region " + action.region);
           break;

@@ -10,6 +10,8 @@
 //             touches nothing but the two grippers in between.
 //  - place:   a settle time after release the object is at rest, inside its goal region,
 //             flat on a face within the upright tolerance, and it is still there at the end.
+//             A place without a region sets the object aside to be picked up again: a
+//             settle time after release it is at rest, flat on a face, on a stable surface.
 //  - execution: no robot-robot or robot-scenery contact, no robot touching an object it is
 //             not manipulating, no object knocked from rest, joint tracking within its limit,
 //             and at the end every object the world's goals send to a region is inside it

@@ -70,6 +70,9 @@ void addPlannerOptions(CLI::App& command, PlannerChoice& choice) {
   command.add_option("--fallback-rounds", choice.fallback_rounds, kFallbackRoundsHelp)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  command.add_flag("--no-set-aside{false}", choice.set_aside,
+                   "never set an object down anywhere but at its goal (by default an object standing where another's "
+                   "every pick reaches over it may be set aside for a while)");
   command.add_flag("--verbose", choice.verbose, "print the planner's progress (queries, conflict resolutions) on stderr");
 }
 

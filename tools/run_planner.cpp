@@ -23,6 +23,7 @@ planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoic
   settings.seed = choice.seed;
   settings.max_rounds = choice.max_rounds;
   settings.sequential_fallback_rounds = choice.fallback_rounds;
+  settings.set_aside = choice.set_aside;
   planner::PlannerBudget budget;
   const auto started = std::chrono::steady_clock::now();
   budget.deadline = started + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
@@ -45,7 +46,9 @@ std::string describePlanResult(const planner::PlanResult& result) {
   out << "\n";
   out << "time: construction " << s.construction_seconds << " s, search " << s.search_seconds << " s, conflict resolution "
       << s.conflict_seconds << " s, " << s.rounds << (s.rounds == 1 ? " round\n" : " rounds\n");
-  out << "task-space hypergraph: " << s.task_vertices << " vertices, " << s.task_hyperarcs << " hyperarcs\n";
+  out << "task-space hypergraph: " << s.task_vertices << " vertices, " << s.task_hyperarcs << " hyperarcs";
+  if (s.set_aside_sites > 0) out << " (" << s.set_aside_sites << (s.set_aside_sites == 1 ? " object" : " objects") << " with a set-aside site)";
+  out << "\n";
   out << "motion hypergraph: " << s.motion_vertices << " vertices, " << s.motion_transitions << " transitions, "
       << s.motion_moves << " moves, " << s.roadmaps << " roadmaps (" << s.roadmap_nodes << " nodes)\n";
   out << "search: " << s.expansions << " expansions, " << s.task_plans << " task plans, " << s.conflict_nodes

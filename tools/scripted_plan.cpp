@@ -791,7 +791,8 @@ class ScriptPlanner {
 
     const Millis start = timeline.t;
     commit(r, c.chain, start);
-    // a place action needs a region: the one named, or the one containing an explicit position
+    // judged in the region named, or the one containing an explicit position; elsewhere as an
+    // object set aside (a place without a region: at rest on a stable surface)
     const core::Region* judged = region;
     for (std::size_t g = 0; g < world_.regions.size() && judged == nullptr; ++g) {
       const core::Region& candidate = world_.regions[g];
@@ -800,10 +801,8 @@ class ScriptPlanner {
       volume.size = candidate.size;
       if (core::pointInBox(p_WO, volume)) judged = &candidate;
     }
-    if (judged != nullptr) {
-      actions_.push_back({core::ActionType::kPlace, robot, "", spec.name, judged->name, toSeconds(start + c.descent_start),
-                          toSeconds(start + c.retreat_end)});
-    }
+    actions_.push_back({core::ActionType::kPlace, robot, "", spec.name, judged != nullptr ? judged->name : "",
+                        toSeconds(start + c.descent_start), toSeconds(start + c.retreat_end)});
     object.X_WO = c.X_WO * Eigen::Translation3d(s.offset);
     if (region != nullptr) object.X_WO.translation().z() -= settings_.drop_height;  // it settles on the floor
     object.holder = -1;

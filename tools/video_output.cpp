@@ -18,7 +18,8 @@ namespace {
 std::string describe(const core::PlanAction& a) {
   switch (a.type) {
     case core::ActionType::kPick: return a.robot + " picks " + a.object;
-    case core::ActionType::kPlace: return a.robot + " places " + a.object + " in " + a.region;
+    case core::ActionType::kPlace:
+      return a.region.empty() ? a.robot + " sets " + a.object + " aside" : a.robot + " places " + a.object + " in " + a.region;
     case core::ActionType::kHandoff: return a.robot + " hands " + a.object + " to " + a.receiver;
   }
   return "";

@@ -201,7 +201,7 @@ Plan randomPlan(std::mt19937_64& rng) {
 
 TEST_CASE("good plans parse, validate and round trip", "[plan]") {
   const std::vector<fs::path> files = plansIn("good");
-  REQUIRE(files.size() >= 4);
+  REQUIRE(files.size() >= 5);
   for (const fs::path& file : files) {
     INFO(file.filename().string());
     const Plan dut = loadPlanFile(file);
@@ -220,6 +220,17 @@ TEST_CASE("canonical plan files are written back byte for byte", "[plan]") {
     const std::string text = readText(kPlans / "good" / name);
     REQUIRE(writePlanJson(parsePlanJson(text, name)) == text);
   }
+}
+
+TEST_CASE("a place without a region sets the object aside and is written without one", "[plan]") {
+  const Plan dut = loadPlanFile(kPlans / "good" / "set_aside_and_pick_up.json");
+  REQUIRE(dut.actions.size() == 4);
+  REQUIRE(dut.actions[1].type == ActionType::kPlace);
+  REQUIRE(dut.actions[1].region.empty());
+  REQUIRE(dut.actions[3].region == "bin_blue");
+  const nlohmann::json written = nlohmann::json::parse(writePlanJson(dut));
+  REQUIRE_FALSE(written["actions"][1].contains("region"));
+  REQUIRE(written["actions"][3]["region"] == "bin_blue");
 }
 
 TEST_CASE("the example plan reads as written", "[plan]") {
@@ -375,7 +386,8 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
        {"parse",
         "/actions/1/robot: unknown key (expected type, giver, receiver, object, start, "
         "end)"}},
-      {"place_no_region", {"parse", "/actions/2/region: missing (a place names its goal region)"}},
+      {"place_empty_region",
+       {"parse", "/actions/2/region: a region name must not be empty (leave the field out to set the object aside)"}},
       {"pick_with_region",
        {"parse", "/actions/0/region: unknown key (expected type, robot, object, start, end)"}},
       {"end_before_start", {"parse", "/actions/0/end: ends at 0.5 s, before its start 1 s"}},

@@ -18,11 +18,12 @@
 namespace dashbed::planner::testing {
 
 /// Every object's actions form a chain: picked at its start by one robot, handed along, placed
-/// in its goal region by the robot holding it; no robot ever holds two objects.
+/// in its goal region by the robot holding it, or set aside (a place without a region) at most
+/// once and picked up again; no robot ever holds two objects.
 inline void requireValidActions(const core::Plan& plan, const core::World& world) {
   std::map<std::string, std::string> holder;     // object -> robot holding it
   std::map<std::string, std::string> holding;    // robot -> object
-  std::set<std::string> placed;
+  std::set<std::string> placed, aside, set_aside;  // at the goal, aside now, ever set aside
   std::vector<core::PlanAction> actions = plan.actions;
   std::stable_sort(actions.begin(), actions.end(), [](const auto& a, const auto& b) { return a.end < b.end; });
   for (const core::PlanAction& a : actions) {
@@ -32,6 +33,8 @@ inline void requireValidActions(const core::Plan& plan, const core::World& world
         REQUIRE(holder.count(a.object) == 0);
         REQUIRE(placed.count(a.object) == 0);
         REQUIRE(holding.count(a.robot) == 0);
+        REQUIRE(aside.count(a.object) == set_aside.count(a.object));  // from its start, or from aside
+        aside.erase(a.object);
         holder[a.object] = a.robot;
         holding[a.robot] = a.object;
         break;
@@ -44,9 +47,14 @@ inline void requireValidActions(const core::Plan& plan, const core::World& world
         break;
       case core::ActionType::kPlace:
         REQUIRE(holder.at(a.object) == a.robot);
-        REQUIRE(a.region == world.goalRegionOf(*world.findObject(a.object))->name);
         holder.erase(a.object);
         holding.erase(a.robot);
+        if (a.region.empty()) {
+          REQUIRE(set_aside.insert(a.object).second);
+          aside.insert(a.object);
+          break;
+        }
+        REQUIRE(a.region == world.goalRegionOf(*world.findObject(a.object))->name);
         placed.insert(a.object);
         break;
     }
@@ -55,6 +63,7 @@ inline void requireValidActions(const core::Plan& plan, const core::World& world
     if (world.goalRegionOf(object) != nullptr) CHECK(placed.count(object.name) == 1);
   }
   CHECK(holding.empty());
+  CHECK(aside.empty());
 }
 
 /// Every move starts from rest as written: a point with a non-zero joint velocity (a move's

@@ -206,10 +206,32 @@ TEST_CASE("a timeout without any task plan names the transitions that were never
   CHECK_FALSE(result.plan);
 }
 
+TEST_CASE("an object in the way of another's every pick is set aside and picked up again", "[planner][dash]") {
+  // green_3 goes in behind blue_3, and every pick of green_3 reaches over blue_3 (and blue_0)
+  PlannerSettings settings = testSettings();
+  settings.max_rounds = 3;
+  const core::LoadedWorld world = core::loadWorld(worldPath("handwritten/x5_shelf_item_set_aside.yaml"));
+  const PlanResult result = solve(world, settings);
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  const core::Plan& plan = *result.plan;
+  core::checkPlanStructure(plan, "plan");
+  requireValidActions(plan, *world.world);
+  requireMovesStartAtRest(plan);
+  requireNoRobotCollision(plan, world);
+  CHECK(plan.statistics.at("set_aside_sites") == 2);  // blue_0 and blue_3
+  std::vector<std::string> set_aside;
+  for (const core::PlanAction& action : plan.actions) {
+    if (action.type == core::ActionType::kPlace && action.region.empty()) set_aside.push_back(action.object);
+  }
+  CHECK(set_aside == std::vector<std::string>{"blue_3"});
+}
+
 TEST_CASE("a timeout without any task plan names the picks that pass over other objects", "[planner][dash]") {
   PlannerSettings settings = testSettings();
   settings.max_rounds = 2;
-  const PlanResult result = solve(core::loadWorld(testWorldPath("shelf_pick_deadlock.yaml")), settings);
+  settings.set_aside = false;  // nothing set down anywhere but at its goal
+  const PlanResult result = solve(core::loadWorld(worldPath("handwritten/x5_shelf_item_set_aside.yaml")), settings);
   CHECK(result.status == PlannerStatus::kTimeout);
   CHECK_THAT(result.reason, Contains("no task plan in the representation; every pick of green_3 passes over "
                                      "blue_0 and blue_3 at their starts"));

@@ -127,3 +127,40 @@ TEST_CASE("objects of other sizes sent to one region get slots clear of each oth
     }
   }
 }
+
+TEST_CASE("a set-aside site stands where the object started, moved on its surface, clear of the rest and in reach",
+          "[planner][sites]") {
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/handwritten/x5_shelf_item_set_aside.yaml");
+  planner::ObjectSites sites = planner::objectSites(world);
+  CHECK_FALSE(sites.anyAside());
+  const int blue_0 = 0, green_3 = 1, blue_3 = 2;
+  REQUIRE(planner::setAsideSites(world, sites, {blue_0, blue_3}) == std::vector<int>{blue_0, blue_3});
+  CHECK(sites.anyAside());
+  CHECK_FALSE(sites.aside[green_3]);
+  CHECK_FALSE(sites.site(planner::ObjectSites::asideSite(green_3)));
+  const auto radius = [](const Eigen::Vector3d& size) { return size.head<2>().norm() / 2; };  // upright boxes
+  for (const int o : {blue_0, blue_3}) {
+    INFO(world.world->objects[o].name);
+    const Eigen::Vector3d& size = world.world->objects[o].size;
+    const core::Pose& X_WO = *sites.aside[o];
+    const std::optional<planner::RestingObject> site = sites.site(planner::ObjectSites::asideSite(o));
+    REQUIRE(site);
+    CHECK(site->object == o);
+    CHECK(site->X_WO.isApprox(X_WO));
+    // on the table as it started: same height and orientation
+    CHECK(X_WO.translation().z() == Approx(sites.start[o].translation().z()));
+    CHECK(X_WO.linear().isApprox(sites.start[o].linear()));
+    CHECK(reachedByARobot(world, X_WO, size));
+    // the open gripper's reach from every other site...
+    for (int s = 0; s < sites.numSites(); ++s) {
+      const std::optional<planner::RestingObject> other = sites.site(s);
+      if (!other || s == planner::ObjectSites::asideSite(o)) continue;
+      const double apart = (other->X_WO.translation() - X_WO.translation()).head<2>().norm();
+      CHECK(apart >= radius(size) + radius(world.world->objects[other->object].size) + planner::kOpenFingerReach);
+    }
+    // ... and from the shelf, in front of the table's far half
+    const core::FixtureSpec& shelf = *world.world->findFixture("shelf");
+    CHECK(X_WO.translation().x() + radius(size) + planner::kOpenFingerReach <= shelf.X_WF.translation().x() - shelf.size.x() / 2);
+  }
+}

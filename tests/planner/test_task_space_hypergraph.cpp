@@ -205,6 +205,54 @@ TEST_CASE("a robot reaching nothing can still hold objects through handoffs", "[
   }
 }
 
+TEST_CASE("set-aside hyperarcs: a place there and a pick again per robot that can hold the object",
+          "[planner][task_space]") {
+  // o0: picked by r0 only, placed by r1 only; o1 without a set-aside site
+  AllowedTransitions allowed;
+  allowed.robots = 2;
+  allowed.objects = 2;
+  allowed.reach = reachMap({{0}, {0, 1}}, {{1}, {0, 1}});
+  allowed.aside = {{0, 1}, {}};
+  SECTION("both robots hold o0 (handoffs): four set-aside hyperarcs, no new vertex") {
+    allowed.handoff = overlapMatrix(2, true);
+    AllowedTransitions without = allowed;
+    without.aside.clear();
+    const TaskSpaceHypergraph plain(without);
+    const TaskSpaceHypergraph dut(allowed);
+    checkInvariants(dut);
+    CHECK(dut.numVertices() == plain.numVertices());
+    REQUIRE(dut.numHyperarcs() == plain.numHyperarcs() + 4);
+    for (std::size_t e = 0; e < plain.numHyperarcs(); ++e) {  // the others keep their ids
+      CHECK(dut.hyperarcName(static_cast<int>(e)) == plain.hyperarcName(static_cast<int>(e)));
+      CHECK(dut.hyperarcs()[e].rest_pose != RestPose::kAside);
+    }
+    const int first = static_cast<int>(plain.numHyperarcs());
+    CHECK(dut.hyperarcName(first) == "place(r0,o0,aside)");
+    CHECK(dut.hyperarcName(first + 1) == "place(r1,o0,aside)");
+    CHECK(dut.hyperarcName(first + 2) == "pick(r0,o0,aside)");
+    CHECK(dut.hyperarcName(first + 3) == "pick(r1,o0,aside)");
+    const TransitionHyperarc& set_down = dut.hyperarcs()[static_cast<std::size_t>(first + 1)];
+    const TransitionHyperarc& pick_up = dut.hyperarcs()[static_cast<std::size_t>(first + 3)];
+    CHECK(set_down.kind == TransitionKind::kPlace);
+    CHECK(set_down.rest_pose == RestPose::kAside);
+    CHECK(set_down.tail == std::vector<int>{dut.holdingVertex(1, 0)});
+    CHECK(pick_up.kind == TransitionKind::kPick);
+    CHECK(pick_up.rest_pose == RestPose::kAside);
+    CHECK(pick_up.tail == set_down.head);
+    CHECK(pick_up.head == set_down.tail);
+  }
+  SECTION("without handoffs r1 never holds o0: only r0 sets it aside") {
+    allowed.handoff = overlapMatrix(2, false);
+    const TaskSpaceHypergraph dut(allowed);
+    checkInvariants(dut);
+    std::vector<std::string> aside;
+    for (std::size_t e = 0; e < dut.numHyperarcs(); ++e) {
+      if (dut.hyperarcs()[e].rest_pose == RestPose::kAside) aside.push_back(dut.hyperarcName(static_cast<int>(e)));
+    }
+    CHECK(aside == std::vector<std::string>{"place(r0,o0,aside)", "pick(r0,o0,aside)"});
+  }
+}
+
 TEST_CASE("robots without workspace overlap get no handoffs", "[planner][task_space]") {
   // three robots in a row: r0-r1 and r1-r2 overlap, r0-r2 do not
   std::vector<std::vector<bool>> overlap = overlapMatrix(3, false);
@@ -325,6 +373,12 @@ TEST_CASE("bad allowed transitions are rejected with a message", "[planner][task
   SECTION("overlap matrix of the wrong size") {
     allowed.handoff[1].pop_back();
     CHECK_THROWS_WITH(TaskSpaceHypergraph(allowed), Contains("handoff row 1 has 1 entries, expected 2"));
+  }
+  SECTION("set-aside robots of the wrong size or out of range") {
+    allowed.aside = {{0}};
+    CHECK_THROWS_WITH(TaskSpaceHypergraph(allowed), Contains("aside needs no entry or one per object (2), got 1"));
+    allowed.aside = {{0}, {2}};
+    CHECK_THROWS_WITH(TaskSpaceHypergraph(allowed), Contains("aside[1] names robot 2 of 2"));
   }
   SECTION("negative counts") {
     allowed.robots = -1;

@@ -125,6 +125,24 @@ TEST_CASE("a place outside the goal region fails the placement", "[sim][scripted
   CHECK_THAT(place.failure, Catch::Matchers::Contains("outside bin_green"));
 }
 
+TEST_CASE("a cube set aside on the table and picked up again passes, one set down on another fails", "[sim][scripted]") {
+  // cube_0 rests at about (0.409, -0.125); r1 sets it down 0.15 m further along y, at table height
+  const sim::Report report =
+      simulate("r1 picks cube_0; r1 places cube_0 at 0.41 0.03 0.77; r1 picks cube_0; r1 places cube_0 in bin_green");
+  INFO(sim::writeReportJson(report));
+  const auto& aside = action(report, "set aside cube_0 by r1");
+  CHECK(aside.verdict == sim::Verdict::kPassed);
+  CHECK(aside.region.empty());
+  CHECK(report.passed());
+  // set down on top of cube_2 (about (0.406, 0.232) on the table): at rest, but on no surface
+  const sim::Report stacked = simulate("r1 picks cube_0; r1 places cube_0 at 0.4064 0.2323 0.81; r1 moves home");
+  const auto& on_cube = action(stacked, "set aside cube_0 by r1");
+  INFO(on_cube.failure);
+  CHECK_THAT(on_cube.failure, Catch::Matchers::Contains("set aside: cube_0 rests 4") &&
+                                  Catch::Matchers::Contains("mm off stable surface"));
+  CHECK(on_cube.verdict == sim::Verdict::kFailed);
+}
+
 TEST_CASE("an arm sweeping through a resting cube knocks it", "[sim][scripted]") {
   // cube_1 rests at about (-0.405, -0.121); r0 sweeps its open gripper across it 15 mm up
   const sim::Report report = simulate("r0 moves to" + downAt(0, {-0.405, -0.221, 0.785}) + "; r0 moves to" +

@@ -460,7 +460,7 @@ TEST_CASE("script errors name the line, the column and the problem", "[script]")
                         Catch::Contains("TCP at (-0.300, 0.250,"));
 }
 
-TEST_CASE("places at an explicit position are judged in the region that contains them", "[script]") {
+TEST_CASE("places at an explicit position are judged in the region that contains them, else as set aside", "[script]") {
   const core::World& world = *testWorld().world;
   const core::Region& bin = *world.findRegion("bin_red");
   const Eigen::Vector3d p = bin.X_WR.translation() + Eigen::Vector3d(0.02, 0.01, 0.02);
@@ -474,7 +474,9 @@ TEST_CASE("places at an explicit position are judged in the region that contains
 
   const core::Plan outside = planFromScript(testWorld(), "r0 picks cube_0; r0 places cube_0 at -0.2 0.2 0.77");
   requireValid(outside);
-  CHECK(outside.actions.size() == 1);  // the pick only: no region to judge the placement in
+  REQUIRE(outside.actions.size() == 2);
+  CHECK(outside.actions[1].type == core::ActionType::kPlace);
+  CHECK(outside.actions[1].region.empty());  // set aside: judged at rest on a stable surface
 }
 
 }  // namespace
