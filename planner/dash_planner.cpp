@@ -111,6 +111,40 @@ std::string crowdedPicksText(MotionHypergraph& graph, std::size_t limit) {
   return text;
 }
 
+/// The objects some other object's every pick passes over (crowdedPicks), in id order.
+std::vector<int> objectsInTheWay(MotionHypergraph& graph) {
+  std::vector<int> in_the_way;
+  for (const CrowdedPick& pick : crowdedPicks(graph)) in_the_way.insert(in_the_way.end(), pick.others.begin(), pick.others.end());
+  std::sort(in_the_way.begin(), in_the_way.end());
+  in_the_way.erase(std::unique(in_the_way.begin(), in_the_way.end()), in_the_way.end());
+  return in_the_way;
+}
+
+/// [object] the robots reaching its set-aside site (none without one).
+std::vector<std::vector<int>> setAsideReach(const core::LoadedWorld& world, const ObjectSites& sites) {
+  std::vector<std::vector<int>> reach(sites.aside.size());
+  for (std::size_t o = 0; o < sites.aside.size(); ++o) {
+    for (std::size_t r = 0; r < world.robots->size() && sites.aside[o]; ++r) {
+      if (core::reachesBox((*world.robots)[r], *sites.aside[o], world.world->objects[o].size)) {
+        reach[o].push_back(static_cast<int>(r));
+      }
+    }
+  }
+  return reach;
+}
+
+/// "blue_0 at (0.060, -0.090), blue_3 at (0.300, 0.165)"
+std::string describeSetAsideSites(const core::World& world, const ObjectSites& sites, const std::vector<int>& objects) {
+  std::ostringstream text;
+  text << std::fixed << std::setprecision(3);
+  for (const int o : objects) {
+    const Eigen::Vector3d& p = sites.aside[static_cast<std::size_t>(o)]->translation();
+    text << (o == objects.front() ? "" : ", ") << world.objects[static_cast<std::size_t>(o)].name << " at (" << p.x()
+         << ", " << p.y() << ")";
+  }
+  return text.str();
+}
+
 /// A sequential plan's steps may overlap where they keep clear of each other: conflict
 /// resolution runs again without the steps' order and any schedule shorter than theirs one
 /// after another will do. Where the shortest first finds none, the node free of conflicts for
@@ -258,41 +292,23 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   // objects in the way of every pick of another one get set-aside sites, in case that one must
   // go in before them (a shelf item behind one that goes into the slot in front of it): the
   // representation is built again with them
-  if (const std::vector<CrowdedPick> crowded = settings.set_aside ? crowdedPicks(*graph) : std::vector<CrowdedPick>{};
-      !crowded.empty()) {
-    std::vector<int> in_the_way;
-    for (const CrowdedPick& pick : crowded) in_the_way.insert(in_the_way.end(), pick.others.begin(), pick.others.end());
-    std::sort(in_the_way.begin(), in_the_way.end());
-    in_the_way.erase(std::unique(in_the_way.begin(), in_the_way.end()), in_the_way.end());
+  if (settings.set_aside) {
+    const std::vector<int> in_the_way = objectsInTheWay(*graph);  // its pick samples: the graph's construction
     const Clock::time_point t0 = Clock::now();
     const std::vector<int> given = setAsideSites(world, sites, in_the_way);
-    if (!given.empty()) {
-      std::vector<std::vector<int>> aside(world.world->objects.size());
-      for (const int o : given) {
-        for (std::size_t r = 0; r < world.robots->size(); ++r) {
-          if (core::reachesBox((*world.robots)[r], *sites.aside[o], world.world->objects[o].size)) {
-            aside[o].push_back(static_cast<int>(r));
-          }
-        }
-      }
-      auto with_aside = std::make_unique<const TaskSpaceHypergraph>(
-          TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites), aside));
+    if (given.empty()) {
+      task_space_seconds += secondsSince(t0);
+    } else {
+      auto with_aside = std::make_unique<const TaskSpaceHypergraph>(TaskSpaceHypergraph::fromWorld(
+          *world.world, *world.robots, placementReach(world, sites), setAsideReach(world, sites)));
       // the first representation's construction (its pick samples) counts, then the new one's
-      task_space_seconds += graph->constructionSeconds() + secondsSince(t0);
+      task_space_seconds += secondsSince(t0) + graph->constructionSeconds();
       graph = std::make_unique<MotionHypergraph>(world, *with_aside, sites, settings.seed, settings.representation);
       task_space = std::move(with_aside);
       stats.task_vertices = task_space->numVertices();
       stats.task_hyperarcs = task_space->numHyperarcs();
       stats.set_aside_sites = static_cast<int>(given.size());
-      std::ostringstream where;
-      where << std::fixed << std::setprecision(3);
-      for (const int o : given) {
-        const Eigen::Vector3d& p = sites.aside[o]->translation();
-        where << (o == given.front() ? "" : ", ") << world.world->objects[o].name << " at (" << p.x() << ", " << p.y() << ")";
-      }
-      say("set-aside sites: " + where.str() + crowdedPicksText(*graph, 4));
-    } else {
-      task_space_seconds += secondsSince(t0);
+      say("set-aside sites: " + describeSetAsideSites(*world.world, sites, given) + crowdedPicksText(*graph, 4));
     }
   }
 

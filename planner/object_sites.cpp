@@ -18,10 +18,6 @@ std::optional<RestingObject> ObjectSites::site(int index) const {
   return set_aside ? std::optional(RestingObject{object, *aside[object]}) : std::nullopt;
 }
 
-bool ObjectSites::anyAside() const {
-  return std::any_of(aside.begin(), aside.end(), [](const std::optional<core::Pose>& pose) { return pose.has_value(); });
-}
-
 std::vector<Eigen::Vector3d> regionSlots(const core::Region& region, const Eigen::Vector3d& size) {
   const double pitch_x = size.x() + 2 * kFingerRoom, pitch_y = size.y() + 2 * kFingerRoom;
   // centres keep the open gripper's reach from the region's edges (a bin's walls)

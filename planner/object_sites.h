@@ -55,8 +55,6 @@ struct ObjectSites {
   /// The object resting at a site; std::nullopt for a goal or set-aside site the object does
   /// not have.
   std::optional<RestingObject> site(int index) const;
-  /// The objects with a set-aside site.
-  bool anyAside() const;
 };
 
 /// Object-centre positions for objects of `size` side by side in a region, row by row, at
