@@ -46,6 +46,10 @@ bool boxesOverlap(const Box& a, const Box& b, double tolerance) {
   return boxPenetrationDepth(a, b) > tolerance;
 }
 
+Eigen::Vector3d rotatedBoxExtent(const Eigen::Matrix3d& R_FB, const Eigen::Vector3d& size) {
+  return (R_FB * size.asDiagonal()).cwiseAbs().rowwise().sum();
+}
+
 bool pointInBox(const Eigen::Vector3d& p_W, const Box& box, double margin) {
   const Eigen::Vector3d p_B = box.X_WB.inverse(Eigen::Isometry) * p_W;
   return ((p_B.array().abs()) <= (0.5 * box.size.array() + margin)).all();

@@ -1,5 +1,6 @@
 #pragma once
-// Small exact geometric queries on oriented boxes (core::Box), used to validate worlds.
+// Small exact geometric queries on oriented boxes (core::Box): world validation, footprints and
+// resting heights.
 
 #include <Eigen/Core>
 
@@ -17,6 +18,10 @@ double boxPenetrationDepth(const Box& a, const Box& b);
 
 /// True when the boxes interpenetrate by more than `tolerance` [m] (touching is fine).
 bool boxesOverlap(const Box& a, const Box& b, double tolerance = 0.0);
+
+/// The extent [m] along the axes of a frame F of a box with edge lengths `size` turned by R_FB
+/// relative to F: the size of the smallest F-aligned box around it.
+Eigen::Vector3d rotatedBoxExtent(const Eigen::Matrix3d& R_FB, const Eigen::Vector3d& size);
 
 /// True when the point p_W lies inside the box grown by `margin` [m] on every side.
 bool pointInBox(const Eigen::Vector3d& p_W, const Box& box, double margin = 0.0);

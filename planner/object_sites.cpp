@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/geometry.h"
+
 namespace dashbed::planner {
 
 std::optional<RestingObject> ObjectSites::site(int index) const {
@@ -55,7 +57,7 @@ Eigen::Matrix3d restingOrientation(const Eigen::Matrix3d& R_WO, double yaw) {
 
 /// The object's extent along the region's axes when its orientation is R_WO.
 Eigen::Vector3d footprintIn(const core::Region& region, const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size) {
-  return (region.X_WR.linear().transpose() * R_WO * size.asDiagonal()).cwiseAbs().rowwise().sum();
+  return core::rotatedBoxExtent(region.X_WR.linear().transpose() * R_WO, size);
 }
 
 }  // namespace
@@ -200,13 +202,12 @@ double horizontalGap(const core::Pose& X_WB, const Eigen::Vector3d& size, const 
 
 /// Radius of the circle around an object's footprint, for an orientation R_WO.
 double footprintRadius(const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size) {
-  const Eigen::Vector3d extent = (R_WO * size.asDiagonal()).cwiseAbs().rowwise().sum();
-  return extent.head<2>().norm() / 2;
+  return core::rotatedBoxExtent(R_WO, size).head<2>().norm() / 2;
 }
 
 /// The stable surface an object rests on (bottom within 5 mm of it, centre over it), or null.
 const core::StableSurface* surfaceUnder(const core::World& world, const core::Pose& X_WO, const Eigen::Vector3d& size) {
-  const double half_height = ((X_WO.linear() * size.asDiagonal()).cwiseAbs().rowwise().sum()).z() / 2;
+  const double half_height = core::rotatedBoxExtent(X_WO.linear(), size).z() / 2;
   for (const core::StableSurface& surface : world.surfaces) {
     const Eigen::Vector3d p_S = surface.X_WS.inverse(Eigen::Isometry) * X_WO.translation();
     if (std::abs(p_S.x()) <= surface.size.x() / 2 && std::abs(p_S.y()) <= surface.size.y() / 2 &&
@@ -229,7 +230,7 @@ std::vector<int> setAsideSites(const core::LoadedWorld& loaded, ObjectSites& sit
     const core::StableSurface* surface = surfaceUnder(world, X_start, object.size);
     if (surface == nullptr) continue;
     const double radius = footprintRadius(X_start.linear(), object.size);
-    const double bottom = X_start.translation().z() - ((X_start.linear() * object.size.asDiagonal()).cwiseAbs().rowwise().sum()).z() / 2;
+    const double bottom = X_start.translation().z() - core::rotatedBoxExtent(X_start.linear(), object.size).z() / 2;
     // fixtures and regions count from the object's bottom up to where a gripper coming from above
     // would be
     const double top = 2 * X_start.translation().z() - bottom + kGripperAbove;

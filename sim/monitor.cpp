@@ -9,6 +9,8 @@
 #include <set>
 #include <sstream>
 
+#include "core/geometry.h"
+
 namespace dashbed::sim {
 namespace {
 
@@ -59,7 +61,7 @@ double tiltFromFlat(const Pose& X_WO) {
 /// How far the bottom of an object at X_WO lies from the nearest stable surface under its
 /// centre [m], or std::nullopt when no surface is under it.
 std::optional<double> gapToSurface(const core::World& world, const Pose& X_WO, const Eigen::Vector3d& size) {
-  const double bottom = X_WO.translation().z() - (X_WO.linear() * size.asDiagonal()).cwiseAbs().rowwise().sum().z() / 2;
+  const double bottom = X_WO.translation().z() - core::rotatedBoxExtent(X_WO.linear(), size).z() / 2;
   std::optional<double> gap;
   for (const core::StableSurface& surface : world.surfaces) {
     const Eigen::Vector3d p_S = surface.X_WS.inverse(Eigen::Isometry) * X_WO.translation();

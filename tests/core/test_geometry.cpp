@@ -149,3 +149,24 @@ TEST_CASE("pointInBox uses the box frame and the margin", "[geometry]") {
   CHECK_FALSE(pointInBox({1.0, 0.0, 0.06}, box));
   CHECK(pointInBox({1.0, 0.0, 0.06}, box, 0.011));
 }
+
+TEST_CASE("rotatedBoxExtent bounds the turned box by its corners", "[geometry]") {
+  const Eigen::Vector3d size(0.4, 0.2, 0.1);
+  // a quarter turn about z swaps the horizontal extents, a quarter turn about x stands it on a side
+  CHECK(rotatedBoxExtent(makePose({0, 0, 0}, {0, 0, std::numbers::pi / 2}).linear(), size).isApprox(Eigen::Vector3d(0.2, 0.4, 0.1)));
+  CHECK(rotatedBoxExtent(makePose({0, 0, 0}, {std::numbers::pi / 2, 0, 0}).linear(), size).isApprox(Eigen::Vector3d(0.4, 0.1, 0.2)));
+  // any turn: the extent is the spread of the eight corners along each axis
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> angle(-std::numbers::pi, std::numbers::pi);
+  for (int trial = 0; trial < 20; ++trial) {
+    const Eigen::Matrix3d R = makePose({0, 0, 0}, {angle(rng), angle(rng), angle(rng)}).linear();
+    Eigen::Vector3d low = Eigen::Vector3d::Constant(std::numeric_limits<double>::infinity()), high = -low;
+    for (int corner = 0; corner < 8; ++corner) {
+      const Eigen::Vector3d sign((corner & 1) ? 1.0 : -1.0, (corner & 2) ? 1.0 : -1.0, (corner & 4) ? 1.0 : -1.0);
+      const Eigen::Vector3d p = R * sign.cwiseProduct(size / 2);
+      low = low.cwiseMin(p);
+      high = high.cwiseMax(p);
+    }
+    CHECK((rotatedBoxExtent(R, size) - (high - low)).cwiseAbs().maxCoeff() < 1e-12);
+  }
+}
