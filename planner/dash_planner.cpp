@@ -111,6 +111,29 @@ std::string crowdedPicksText(MotionHypergraph& graph, std::size_t limit) {
   return text;
 }
 
+/// "; the furthest task plan tried placed 11 of 12 objects, not blue_5 (held by r1)": how far
+/// a greedy query without a plan got, and what it left (at most 4 objects named).
+std::string furthestText(const MotionHypergraph& graph, const TransitionHistory& furthest) {
+  const core::World& world = *graph.world().world;
+  std::vector<std::string> left;
+  int goals = 0;
+  for (std::size_t o = 0; o < furthest.objects.size(); ++o) {
+    if (!graph.sites().goal[o]) continue;
+    ++goals;
+    const TransitionHistory::ObjectState& object = furthest.objects[o];
+    if (object.place == ObjectPlace::kGoal) continue;
+    std::string where = "at its start";
+    if (object.place == ObjectPlace::kHeld) where = "held by " + world.robots[static_cast<std::size_t>(object.holder)].name;
+    if (object.place == ObjectPlace::kAside) where = "set aside";
+    left.push_back(world.objects[o].name + " (" + where + ")");
+  }
+  std::string text = "; the furthest task plan tried placed " + std::to_string(furthest.objectsAtGoal()) + " of " +
+                     std::to_string(goals) + " objects, not ";
+  for (std::size_t k = 0; k < left.size() && k < 4; ++k) text += (k == 0 ? "" : ", ") + left[k];
+  if (left.size() > 4) text += " and " + std::to_string(left.size() - 4) + " more";
+  return text;
+}
+
 /// The objects some other object's every pick passes over (crowdedPicks), in id order.
 std::vector<int> objectsInTheWay(MotionHypergraph& graph) {
   std::vector<int> in_the_way;
@@ -321,6 +344,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   Millis best = std::numeric_limits<Millis>::max();
   std::string last_failure = "no task plan found";
   int fallback_round = 0;  // the round that found the first sequential plan
+  std::optional<TransitionHistory> furthest;  // of the greedy queries without a plan so far
 
   // conflict resolution of a task plan; keeps it when better than the best so far. Returns
   // true when its failure gave a new scheduling constraint (at most the round's allowance).
@@ -413,6 +437,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {
         unconstrained_expansions = greedy.expansions;
       }
+      if (greedy.furthest && (!furthest || greedy.furthest->objectsAtGoal() > furthest->objectsAtGoal())) {
+        furthest = greedy.furthest;
+      }
       if (greedy.status == SearchStatus::kBudget) last_failure = "the greedy search ran out of expansions";
       if (greedy.status == SearchStatus::kExhausted) last_failure = "no task plan in the representation";
       return greedy;
@@ -500,6 +527,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // (e.g. no handoff of an object too small for two grippers)
     const bool no_task_plan = !best_history && stats.task_plans == 0;
     if (no_task_plan) result.reason += crowdedPicksText(*graph, 4);
+    if (no_task_plan && furthest) result.reason += furthestText(*graph, *furthest);
     const std::vector<int> unsampled = no_task_plan ? graph->unsampledHyperarcs() : std::vector<int>{};
     for (std::size_t k = 0; k < unsampled.size() && k < 4; ++k) {
       result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, *task_space, unsampled[k]);

@@ -584,6 +584,7 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
   SearchResult result;
   std::vector<Frame> stack;
   if (std::optional<TransitionHistory> start = source()) stack.push_back({std::move(*start), {}, false});
+  int most_placed = -1;  // objects at their goals in result.furthest
   while (!stack.empty()) {
     if (result.expansions >= budget.max_expansions || (budget.stop && budget.stop())) {
       result.status = SearchStatus::kBudget;
@@ -591,10 +592,15 @@ SearchResult HyperpathSearch::greedy(const SearchBudget& budget) {
     }
     Frame& frame = stack.back();
     if (!frame.expanded) {
+      if (const int placed = frame.history.objectsAtGoal(); placed > most_placed) {
+        most_placed = placed;
+        result.furthest = frame.history;
+      }
       if (frame.history.complete(sites)) {
         if (std::optional<TransitionHistory> done = finish(frame.history)) {
           result.status = SearchStatus::kFound;
           result.plan = std::move(done);
+          result.furthest.reset();
           return result;
         }
         stack.pop_back();

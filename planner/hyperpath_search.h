@@ -78,6 +78,9 @@ struct SearchResult {
   SearchStatus status = SearchStatus::kExhausted;
   std::optional<TransitionHistory> plan;  ///< complete, with the moves home
   std::uint64_t expansions = 0;
+  /// greedy() without a plan: the first history it reached with the most objects at their
+  /// goals, to say how far it got and which objects it left.
+  std::optional<TransitionHistory> furthest;
 };
 
 /// How the robots of a plan share the workspace. The later modes are fallbacks for when conflict

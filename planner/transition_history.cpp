@@ -38,6 +38,11 @@ bool TransitionHistory::complete(const ObjectSites& sites) const {
   return true;
 }
 
+int TransitionHistory::objectsAtGoal() const {
+  return static_cast<int>(
+      std::count_if(objects.begin(), objects.end(), [](const ObjectState& o) { return o.place == ObjectPlace::kGoal; }));
+}
+
 Millis TransitionHistory::makespan() const {
   Millis end = 0;
   for (std::size_t r = 0; r < robots.size(); ++r) {

@@ -72,6 +72,8 @@ struct TransitionHistory {
   SiteSet filledGoals(int sites) const;
   /// Every object with a goal is at it.
   bool complete(const ObjectSites& sites) const;
+  /// How many objects are at their goals.
+  int objectsAtGoal() const;
   /// Latest time any robot is busy (including the final moves and the unfolding once set).
   Millis makespan() const;
 };

@@ -189,7 +189,8 @@ TEST_CASE("a cube too small or too large to be handed over makes the problem inf
   CHECK(result.stats.rounds == 1);
 }
 
-TEST_CASE("a timeout without any task plan names the transitions that were never sampled", "[planner][dash]") {
+TEST_CASE("a timeout without any task plan says how far the search got and names the transitions never sampled",
+          "[planner][dash]") {
   // a 40 mm cube can be handed over, but not at handoff heights out of either arm's reach
   core::World world = core::loadWorldFile(testWorldPath("handoff_too_wide.yaml"));
   world.objects[0].size = Eigen::Vector3d::Constant(0.040);
@@ -201,7 +202,9 @@ TEST_CASE("a timeout without any task plan names the transitions that were never
   settings.representation.transitions.handoff.max_height = 1.6;
   const PlanResult result = solve(loaded, settings);
   CHECK(result.status == PlannerStatus::kTimeout);
+  // a pick of cube_0 would leave its robot no way to pass it on: the search never takes one
   CHECK_THAT(result.reason, Contains("no task plan in the representation") &&
+                                Contains("the furthest task plan tried placed 0 of 1 objects, not cube_0 (at its start)") &&
                                 Contains("never sampled: handoff cube_0 by r1 to r0"));
   CHECK_FALSE(result.plan);
 }
@@ -236,6 +239,8 @@ TEST_CASE("a timeout without any task plan names the picks that pass over other 
   CHECK_THAT(result.reason, Contains("no task plan in the representation; every pick of green_3 passes over "
                                      "blue_0 and blue_3 at their starts"));
   CHECK_THAT(result.reason, !Contains("every pick of blue_0") && !Contains("every pick of blue_3"));
+  // blue_3 goes into the slot in front of green_3's, which nothing can pick: both stay
+  CHECK_THAT(result.reason, Contains("objects, not green_3 (at its start), blue_3 (at its start)"));
   CHECK_FALSE(result.plan);
 }
 
