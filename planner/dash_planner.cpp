@@ -521,7 +521,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (!best_schedule) {
     result.status = PlannerStatus::kTimeout;
     result.reason = (time_up() ? "time budget exhausted after " : "no plan after ") + std::to_string(graph->rounds()) +
-                    " rounds of representation expansion: " + last_failure;
+                    (graph->rounds() == 1 ? " round" : " rounds") + " of representation expansion: " + last_failure;
     // without any task plan, picks that must wait for other objects to be picked first, and
     // the transitions the search asked for and the sampler never found, say where the gap is
     // (e.g. no handoff of an object too small for two grippers)
