@@ -411,6 +411,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     std::string line = std::string(status[static_cast<int>(found.status)]) + " after " +
                        std::to_string(found.expansions) + " expansions";
     if (found.plan) line += ", optimistic makespan " + secondsText(found.plan->makespan());
+    if (found.furthest) line += furthestText(*graph, *found.furthest);
     say(line);
     return found;
   };
