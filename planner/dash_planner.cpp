@@ -127,6 +127,10 @@ std::string furthestText(const MotionHypergraph& graph, const TransitionHistory&
     if (object.place == ObjectPlace::kAside) where = "set aside";
     left.push_back(world.objects[o].name + " (" + where + ")");
   }
+  if (left.empty()) {  // complete, but finish() found a robot no way to where it rests
+    return "; the furthest task plan tried placed all " + std::to_string(goals) +
+           " objects, but a robot found no way back to where it rests";
+  }
   std::string text = "; the furthest task plan tried placed " + std::to_string(furthest.objectsAtGoal()) + " of " +
                      std::to_string(goals) + " objects, not ";
   for (std::size_t k = 0; k < left.size() && k < 4; ++k) text += (k == 0 ? "" : ", ") + left[k];
