@@ -48,13 +48,14 @@ std::string describeTransition(const MotionHypergraph& graph, int id) {
 
 /// Every pick sample of `object`, by any robot (picks are enumerated, not drawn: more rounds
 /// never add one).
-std::vector<const TransitionSample*> pickSamplesOf(MotionHypergraph& graph, int object) {
+std::vector<int> pickTransitionsOf(MotionHypergraph& graph, int object) {
   const TaskSpaceHypergraph& task_space = graph.taskSpace();
-  std::vector<const TransitionSample*> picks;
+  std::vector<int> picks;
   for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
     const TransitionHyperarc& arc = task_space.hyperarcs()[h];
     if (arc.object != object || arc.kind != TransitionKind::kPick || arc.rest_pose != RestPose::kStart) continue;
-    for (const int id : graph.transitionsOf(static_cast<int>(h), -1)) picks.push_back(&graph.transition(id).sample);
+    const std::vector<int>& ids = graph.transitionsOf(static_cast<int>(h), -1);
+    picks.insert(picks.end(), ids.begin(), ids.end());
   }
   return picks;
 }
@@ -74,11 +75,11 @@ std::vector<CrowdedPick> crowdedPicks(MotionHypergraph& graph) {
   std::vector<CrowdedPick> crowded;
   for (int o = 0; o < task_space.numObjects(); ++o) {
     if (!graph.sites().goal[static_cast<std::size_t>(o)]) continue;
-    const std::vector<const TransitionSample*> picks = pickSamplesOf(graph, o);
+    const std::vector<int> picks = pickTransitionsOf(graph, o);
     CrowdedPick pick{o, {}};
     for (int other = 0; other < task_space.numObjects() && !picks.empty(); ++other) {
       const int site = ObjectSites::startSite(other);
-      if (std::all_of(picks.begin(), picks.end(), [site](const TransitionSample* p) { return p->touches.test(site); })) {
+      if (std::all_of(picks.begin(), picks.end(), [&](int id) { return graph.transition(id).sample.touches.test(site); })) {
         pick.others.push_back(other);
       }
     }
@@ -139,12 +140,22 @@ std::string furthestText(const MotionHypergraph& graph, const TransitionHistory&
 }
 
 /// The objects some other object's every pick passes over (crowdedPicks), in id order.
-std::vector<int> objectsInTheWay(MotionHypergraph& graph) {
+std::vector<int> objectsInTheWay(const std::vector<CrowdedPick>& crowded) {
   std::vector<int> in_the_way;
-  for (const CrowdedPick& pick : crowdedPicks(graph)) in_the_way.insert(in_the_way.end(), pick.others.begin(), pick.others.end());
+  for (const CrowdedPick& pick : crowded) in_the_way.insert(in_the_way.end(), pick.others.begin(), pick.others.end());
   std::sort(in_the_way.begin(), in_the_way.end());
   in_the_way.erase(std::unique(in_the_way.begin(), in_the_way.end()), in_the_way.end());
   return in_the_way;
+}
+
+/// Whether `object` set aside at X_WO leaves some pick of each of `crowded`'s objects it is in
+/// the way of clear (one at its start and set aside there would still be in the way).
+bool asideKeepsClear(MotionHypergraph& graph, const std::vector<CrowdedPick>& crowded, int object, const core::Pose& X_WO) {
+  return std::all_of(crowded.begin(), crowded.end(), [&](const CrowdedPick& pick) {
+    if (std::find(pick.others.begin(), pick.others.end(), object) == pick.others.end()) return true;
+    const std::vector<int> picks = pickTransitionsOf(graph, pick.object);
+    return std::any_of(picks.begin(), picks.end(), [&](int id) { return !graph.touches(id, {object, X_WO}); });
+  });
 }
 
 /// [object] the robots reaching its set-aside site (none without one).
@@ -304,7 +315,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     const HyperpathSearch probe(*graph);
     for (int o = 0; o < task_space->numObjects(); ++o) {
       std::string reason = unreachableReason(*world.world, *task_space, probe, o);
-      const bool no_pick = reason.empty() && pickSamplesOf(*graph, o).empty();
+      const bool no_pick = reason.empty() && pickTransitionsOf(*graph, o).empty();
       if (no_pick && graph->sites().goal[o]) {
         reason = "no collision-free grasp of " + world.world->objects[o].name + " at its start for any robot reaching it";
       }
@@ -320,9 +331,11 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   // go in before them (a shelf item behind one that goes into the slot in front of it): the
   // representation is built again with them
   if (settings.set_aside) {
-    const std::vector<int> in_the_way = objectsInTheWay(*graph);  // its pick samples: the graph's construction
+    const std::vector<CrowdedPick> crowded = crowdedPicks(*graph);  // its pick samples: the graph's construction
     const Clock::time_point t0 = Clock::now();
-    const std::vector<int> given = setAsideSites(world, sites, in_the_way);
+    const std::vector<int> given =
+        setAsideSites(world, sites, objectsInTheWay(crowded),
+                      [&](int o, const core::Pose& X_WO) { return asideKeepsClear(*graph, crowded, o, X_WO); });
     if (given.empty()) {
       task_space_seconds += secondsSince(t0);
     } else {

@@ -388,6 +388,20 @@ bool MotionHypergraph::clearOfIdle(int transition_id, int robot, IdlePose pose) 
   return it->second;
 }
 
+bool MotionHypergraph::touches(int transition_id, const RestingObject& object) {
+  if (!checker_) checker_ = std::make_unique<CollisionChecker>(*scene_);
+  for (const TransitionMotion& motion : transition(transition_id).sample.motions) {
+    const controllers::TrajectoryInterpolator curve = keyCurve(motion);
+    for (std::size_t i = 0; i + 1 < motion.keys.size(); ++i) {
+      if (checker_->motionObjectHits(motion.robot, keyCurvePiece(*scene_, motion, curve, i), std::span(&object, 1),
+                                     motion.held[i])[0]) {
+        return true;
+      }
+    }
+  }
+  return false;
+}
+
 void MotionHypergraph::clearSchedulingConstraints() {
   scheduling_constraints_.clear();
   hyperarc_pair_constraints_.clear();

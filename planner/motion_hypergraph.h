@@ -182,6 +182,9 @@ class MotionHypergraph {
   /// wait, along the key curves the simulator follows. A geometric check (unlike homeConflict),
   /// made once per pair and pose.
   bool clearOfIdle(int transition, int robot, IdlePose pose);
+  /// True when some motion of `transition` touches `object` resting where it says, along the
+  /// key curves the simulator follows (as the sample's `touches` are found for the sites).
+  bool touches(int transition, const RestingObject& object);
   std::size_t numSchedulingConstraints() const { return scheduling_constraints_.size() + home_constraints_.size(); }
   void clearSchedulingConstraints();  ///< all of them
 

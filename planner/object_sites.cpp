@@ -220,7 +220,8 @@ const core::StableSurface* surfaceUnder(const core::World& world, const core::Po
 
 }  // namespace
 
-std::vector<int> setAsideSites(const core::LoadedWorld& loaded, ObjectSites& sites, const std::vector<int>& objects) {
+std::vector<int> setAsideSites(const core::LoadedWorld& loaded, ObjectSites& sites, const std::vector<int>& objects,
+                               const std::function<bool(int, const core::Pose&)>& keeps_clear) {
   const core::World& world = *loaded.world;
   constexpr double kPitch = 0.03;  // candidate spacing on the surface [m]
   std::vector<int> given;
@@ -287,7 +288,11 @@ std::vector<int> setAsideSites(const core::LoadedWorld& loaded, ObjectSites& sit
     }
     std::stable_sort(spots.begin(), spots.end(),
                      [](const Spot& a, const Spot& b) { return std::tie(b.roomy, a.key) < std::tie(a.roomy, b.key); });
-    const auto spot = std::find_if(spots.begin(), spots.end(), [&](const Spot& s) { return reached(s.X_WO); });
+    auto spot = std::find_if(spots.begin(), spots.end(),
+                             [&](const Spot& s) { return reached(s.X_WO) && (!keeps_clear || keeps_clear(o, s.X_WO)); });
+    if (spot == spots.end() && keeps_clear) {
+      spot = std::find_if(spots.begin(), spots.end(), [&](const Spot& s) { return reached(s.X_WO); });
+    }
     if (spot == spots.end()) continue;
     sites.aside[static_cast<std::size_t>(o)] = spot->X_WO;
     given.push_back(o);

@@ -19,6 +19,7 @@
 // an object standing where some other object's every pick reaches over it (setAsideSites): a
 // shelf item in the way of the one behind it, which must go in after that one.
 
+#include <functional>
 #include <optional>
 #include <vector>
 
@@ -84,8 +85,11 @@ inline constexpr double kAsideRoom = 0.12;
 /// starts on, in its start orientation, that a robot picking it at its start reaches, out of
 /// every other site (start, goal, set-aside), every goal region, fixture and robot base by the
 /// open gripper's reach. Of those, the nearest to its start with kAsideRoom all round, else the
-/// roomiest. An object without such a spot (e.g. no surface has room) gets none. Returns the
-/// objects given one.
-std::vector<int> setAsideSites(const core::LoadedWorld& world, ObjectSites& sites, const std::vector<int>& objects);
+/// roomiest; and of those, the first that `keeps_clear(object, X_WO)` accepts when it accepts
+/// any (the planner: a spot that leaves some pick of each object it is set aside for clear).
+/// An object without such a spot (e.g. no surface has room) gets none. Returns the objects
+/// given one.
+std::vector<int> setAsideSites(const core::LoadedWorld& world, ObjectSites& sites, const std::vector<int>& objects,
+                               const std::function<bool(int, const core::Pose&)>& keeps_clear = {});
 
 }  // namespace dashbed::planner

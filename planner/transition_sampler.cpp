@@ -8,6 +8,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/geometry.h"
 #include "core/grasps.h"
 #include "planner/key_curve.h"
 
@@ -46,6 +47,11 @@ constexpr int kHandoffOrientations = static_cast<int>(kHandoffPitches.size()) * 
 constexpr int kDrawsPerSample = 20;
 /// Tolerance of the axis tests on rotations built from 90-degree turns.
 constexpr double kAxisTolerance = 1e-6;
+/// How far in front of a shelf's open side a held object may start sliding in at the nearest,
+/// when it cannot start slide_distance back (placeSample) [m].
+constexpr double kSlideClearance = 0.01;
+/// How much nearer each further try of such a slide starts (placeSample) [m].
+constexpr double kSlideShortening = 0.02;
 
 Pose shifted(Pose X, const Vector3d& delta) {
   X.translation() += delta;
@@ -538,21 +544,53 @@ std::optional<TransitionSample> placeAlong(Context& c, const Part& p, double rel
   return sample;
 }
 
+/// How far back from X_WO an object of `size` slid in along the horizontal `approach` has to
+/// start to be out of the shelf it goes into, kSlideClearance in front of its open side (-x of
+/// the shelf), or std::nullopt when it goes into no shelf or not through the open side.
+std::optional<double> outOfShelfDistance(const core::World& world, const Vector3d& size, const Pose& X_WO,
+                                         const Vector3d& approach) {
+  for (const core::FixtureSpec& shelf : world.fixtures) {
+    if (shelf.type != core::FixtureType::kShelf) continue;
+    const Vector3d p_FO = shelf.X_WF.inverse() * X_WO.translation();  // X_WF: the shelf's bottom centre
+    const Vector3d half = shelf.size / 2;
+    if (std::abs(p_FO.x()) > half.x() || std::abs(p_FO.y()) > half.y() || p_FO.z() < 0 || p_FO.z() > shelf.size.z()) {
+      continue;
+    }
+    const double in = (shelf.X_WF.linear().transpose() * approach).x();  // along the shelf's depth
+    if (in < std::numbers::sqrt2 / 2) return std::nullopt;               // not in through the front
+    const double depth = core::rotatedBoxExtent(shelf.X_WF.linear().transpose() * X_WO.linear(), size).x();
+    return (p_FO.x() + half.x() + depth / 2 + kSlideClearance) / in;
+  }
+  return std::nullopt;
+}
+
 /// Start back along the held grasp's approach axis from the release pose: cartesian_distance
 /// above the placement for a vertical approach (released drop_height above it),
 /// slide_distance in front of it for a horizontal one (slid in and released slide_height above
-/// it). Other approaches (from below,
-/// oblique) give nothing.
+/// it). A slide into a shelf through its open side that has no sample from slide_distance
+/// back is tried again from nearer, kSlideShortening at a time, down to just out of the shelf
+/// (outOfShelfDistance): reaching across into the slot straight in front of the other robot,
+/// a robot's wrist would be over that robot's base at slide_distance back. Other approaches
+/// (from below, oblique) give nothing.
 std::optional<TransitionSample> placeSample(Context& c, const Part& p) {
   const TransitionSettings& s = c.settings;
   const Vector3d approach = (p.X_WO * p.grasp.X_OT).linear().col(2);
   const bool vertical = approach.z() < -1.0 + kAxisTolerance;
   if (!vertical && std::abs(approach.z()) > kAxisTolerance) return std::nullopt;
   const double release = vertical ? s.drop_height : s.slide_height;
-  const double distance = vertical ? s.cartesian_distance : s.slide_distance;
   const Pose X_WT = shifted(p.X_WO, release * kUp) * p.grasp.X_OT;
-  return firstLine(*p.arm, backedOff(X_WT, distance), distance * approach, s,
-                   [&](const Line& in) { return placeAlong(c, p, release, vertical, distance, in); });
+  const auto from = [&](double distance) {
+    return firstLine(*p.arm, backedOff(X_WT, distance), distance * approach, s,
+                     [&](const Line& in) { return placeAlong(c, p, release, vertical, distance, in); });
+  };
+  if (vertical) return from(s.cartesian_distance);
+  const std::optional<double> out =
+      outOfShelfDistance(c.world, c.world.objects[static_cast<std::size_t>(p.object)].size, p.X_WO, approach);
+  const double shortest = std::min(std::max(out.value_or(s.slide_distance), s.cartesian_distance), s.slide_distance);
+  for (double distance = s.slide_distance;; distance = std::max(distance - kSlideShortening, shortest)) {
+    if (std::optional<TransitionSample> sample = from(distance)) return sample;
+    if (distance <= shortest) return std::nullopt;
+  }
 }
 
 // ---- handoff ---------------------------------------------------------------------------------

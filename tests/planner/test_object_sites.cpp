@@ -128,6 +128,31 @@ TEST_CASE("objects of other sizes sent to one region get slots clear of each oth
   }
 }
 
+TEST_CASE("a set-aside spot is the first one keeps_clear accepts, else the first of all", "[planner][sites]") {
+  const core::LoadedWorld world =
+      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/handwritten/x5_shelf_item_set_aside.yaml");
+  const int blue_3 = 2;
+  planner::ObjectSites plain = planner::objectSites(world);
+  REQUIRE(planner::setAsideSites(world, plain, {blue_3}) == std::vector<int>{blue_3});
+  const Eigen::Vector3d first = plain.aside[blue_3]->translation();
+  // every spot within 0.1 m of the first rejected
+  planner::ObjectSites moved = planner::objectSites(world);
+  int asked = 0;
+  const auto far_from_first = [&](int object, const core::Pose& X_WO) {
+    ++asked;
+    CHECK(object == blue_3);
+    return (X_WO.translation() - first).norm() > 0.1;
+  };
+  REQUIRE(planner::setAsideSites(world, moved, {blue_3}, far_from_first) == std::vector<int>{blue_3});
+  CHECK((moved.aside[blue_3]->translation() - first).norm() > 0.1);
+  CHECK(asked > 1);
+  // none accepted: the spot it takes without asking
+  planner::ObjectSites fallback = planner::objectSites(world);
+  REQUIRE(planner::setAsideSites(world, fallback, {blue_3}, [](int, const core::Pose&) { return false; }) ==
+          std::vector<int>{blue_3});
+  CHECK(fallback.aside[blue_3]->translation().isApprox(first));
+}
+
 TEST_CASE("a set-aside site stands where the object started, moved on its surface, clear of the rest and in reach",
           "[planner][sites]") {
   const core::LoadedWorld world =

@@ -200,6 +200,19 @@ bool pickedFromAbove(const Setup& s, const TransitionSample& pick) {
          (pickApproach(s, pick) - settings.cartesian_distance * Vector3d::UnitZ()).norm() < 1e-6;
 }
 
+/// Whether object `object` at X_WO is wholly in front of the open side (-x) of a shelf and
+/// within its width and height.
+bool inFrontOfAShelf(const Setup& s, const Pose& X_WO, int object) {
+  const Vector3d& size = s.loaded.world->objects[static_cast<std::size_t>(object)].size;
+  return std::any_of(s.loaded.world->fixtures.begin(), s.loaded.world->fixtures.end(), [&](const core::FixtureSpec& f) {
+    if (f.type != core::FixtureType::kShelf) return false;
+    const Vector3d p_F = f.X_WF.inverse() * X_WO.translation();
+    const Vector3d extent = (f.X_WF.linear().transpose() * X_WO.linear()).cwiseAbs() * size;
+    return p_F.x() + extent.x() / 2 <= -f.size.x() / 2 && std::abs(p_F.y()) <= f.size.y() / 2 && p_F.z() >= 0 &&
+           p_F.z() <= f.size.z();
+  });
+}
+
 /// Every property of a sample the sampler promises (transition_sampler.h).
 void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
   CollisionChecker checker(s.scene);
@@ -278,6 +291,19 @@ void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
     REQUIRE((vertical || std::abs(X_WT.linear()(2, 2)) < 1e-6));
     requireSamePose(tcp(m, release_key), lifted(sample.X_WO, vertical ? settings.drop_height : settings.slide_height) *
                                              sample.grasp_before->X_OT);
+    // in straight along the approach axis: cartesian_distance down, or slide_distance in; or
+    // a shorter slide into a shelf, from where the object is just out of it
+    const Vector3d back = tcp(m, 0).translation() - tcp(m, release_key).translation();
+    const double distance = back.norm();
+    REQUIRE((back + distance * X_WT.linear().col(2)).norm() < 1e-6);
+    if (vertical || distance > settings.slide_distance - 1e-6) {
+      REQUIRE(distance == Approx(vertical ? settings.cartesian_distance : settings.slide_distance).margin(1e-6));
+    } else {
+      REQUIRE(distance >= settings.cartesian_distance - 1e-6);
+      Pose start = lifted(sample.X_WO, settings.slide_height);  // the object where the slide starts
+      start.translation() += back;
+      REQUIRE(inFrontOfAShelf(s, start, sample.object));
+    }
     for (std::size_t i = 0; i < m.finger.size(); ++i) {
       if (i < release_key) {
         REQUIRE(m.finger[i] == sample.grasp_before->finger);
@@ -649,4 +675,33 @@ TEST_CASE("The transition sampler rejects hyperarcs of the wrong kind", "[planne
   REQUIRE_THROWS_AS(sampler.pick(s.hyperarcs(TransitionKind::kPlace).front()), std::invalid_argument);
   REQUIRE_THROWS_AS(sampler.pick(-1), std::invalid_argument);
   REQUIRE_THROWS_AS(sampler.pick(static_cast<int>(s.task_space.numHyperarcs())), std::invalid_argument);
+}
+
+TEST_CASE("A robot slides an item into a slot in front of the other robot's base from just out of the shelf",
+          "[planner][transition]") {
+  // slot_5_front lies straight in front of r1. r0, reaching across, would have its wrist over
+  // r1's base at the start of a slide_distance slide: it slides in from nearer
+  const Setup& s = world("../tests/planner/worlds/shelf_far_front_slot.yaml");
+  TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
+  const TransitionSettings settings;
+  std::vector<Grasp> grasps;  // every grasp r1 picks blue_5 in
+  for (const int h : s.hyperarcs(TransitionKind::kPick)) {
+    for (const TransitionSample& sample : sampler.pick(h)) grasps.push_back(*sample.grasp_after);
+  }
+  REQUIRE_FALSE(grasps.empty());
+  int full = 0, shorter = 0;
+  for (const int h : s.hyperarcs(TransitionKind::kPlace)) {
+    if (s.task_space.hyperarcs()[static_cast<std::size_t>(h)].robot != 0) continue;
+    for (const Grasp& grasp : grasps) {
+      for (const TransitionSample& sample : sampler.place(h, grasp)) {
+        checkSample(s, sample, h);  // with where the slide starts
+        const Pose X_WT = sample.X_WO * grasp.X_OT;
+        if (X_WT.linear().col(2).x() < 0.99) continue;  // not in through the shelf's open side
+        const Vector3d start = (*s.loaded.robots)[0].tcpPoseInWorld(sample.motions.front().keys.front().q).translation();
+        (X_WT.translation().x() - start.x() < settings.slide_distance - 1e-6 ? shorter : full) += 1;
+      }
+    }
+  }
+  CHECK(shorter > 0);
+  CHECK(full > 0);  // the grasps whose wrist clears r1's base slide in all the way
 }
