@@ -13,9 +13,10 @@
 //          that touches fewer other objects' sites than coming in sideways (items standing close
 //          together, whose neighbours a sideways approach sweeps over at their height) or where
 //          coming in sideways has no sample.
-//  place   the robot starts holding the object cartesian_distance back along its approach axis
-//          from the goal placement (above it for a vertical approach, in front of it for a
-//          horizontal one: shelves), moves in, opens, dwells, retreats the same way. The object
+//  place   the robot starts holding the object back along its approach axis from the goal
+//          placement (cartesian_distance above it for a vertical approach; slide_distance in
+//          front of it for a horizontal one, shelves, or nearer where that has no sample, down
+//          to just out of the shelf), moves in, opens, dwells, retreats the same way. The object
 //          may rest on any face whose footprint fits the region, turned by multiples of 90
 //          degrees from the region's yaw, at the goal site's position (ObjectSites), as long
 //          as it fills exactly the site's box (the volume the search schedules).
@@ -119,6 +120,7 @@ struct TransitionSettings {
   double slide_height = 0.005;
   /// Length of a horizontal approach [m]: long enough to start outside a shelf compartment
   /// (a back slot lies 0.22 m inside the generated shelf), where roadmap moves can reach.
+  /// Where it has no sample, a slide into a shelf through its open side starts nearer.
   double slide_distance = 0.25;
   /// Each piece is timed for a joint peak of peak_factor x its average within speed_fraction
   /// of the limit. The simulator's cubic through the keys peaks at up to 3 x the average
