@@ -242,7 +242,8 @@ nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStat
           {"scheduling_constraints", stats.scheduling_constraints},
           {"conflict_constraints", stats.conflict_constraints},
           {"unresolved_makespan", stats.unresolved_makespan},
-          {"makespan", stats.makespan}};
+          {"makespan", stats.makespan},
+          {"sequential", stats.sequential}};
 }
 
 }  // namespace
@@ -554,6 +555,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     return result;
   }
   stats.makespan = toSeconds(best);
+  stats.sequential = best_history->sequential;
   result.status = PlannerStatus::kSolved;
   result.plan = writePlan(*graph, *best_history, *best_schedule);
   result.plan->seed = settings.seed;

@@ -97,6 +97,9 @@ struct PlannerStats {
   /// plan, below it where a sequential plan's steps overlap) [s]
   double unresolved_makespan = 0.0;
   double makespan = 0.0;             ///< of the plan [s]
+  /// the plan is the last resort, a sequential task plan (TransitionHistory::sequential): one
+  /// object at a time, each robot waiting at home or folded between its steps
+  bool sequential = false;
 };
 
 struct PlanResult {

@@ -285,6 +285,7 @@ RunRecord runOnce(const BenchCase& c, std::uint64_t seed, const BenchOptions& op
   }
   if (record.outcome != RunOutcome::kSolved) return record;
   record.makespan = result.stats.makespan;
+  record.sequential = result.stats.sequential;
   record.at_budget = record.planning_seconds >= choice.time_budget;
   if (options.simulate) {
     const std::string key = SimulationMemo::key(c, seed, *result.plan);
@@ -535,7 +536,7 @@ std::string summaryCsv(const std::vector<BenchRow>& rows) {
 std::string runsCsv(const std::vector<BenchRow>& rows) {
   std::ostringstream out;
   out << "suite,robots,objects,start,method,seed,status,construction_s,search_s,planning_s,planning_cpu_s,makespan_s,"
-         "rounds,at_budget,sim,sim_reused,reason\n";
+         "rounds,sequential,at_budget,sim,sim_reused,reason\n";
   for (const BenchRow& row : rows) {
     const BenchCase& c = row.scenario;
     for (const RunRecord& r : row.runs) {
@@ -543,7 +544,8 @@ std::string runsCsv(const std::vector<BenchRow>& rows) {
       out << c.suite << "," << c.robots << "," << c.objects << "," << c.start << "," << c.method << "," << r.seed << ","
           << toString(r.outcome) << "," << csvNumber(r.construction_seconds) << "," << csvNumber(r.search_seconds)
           << "," << csvNumber(r.planning_seconds) << "," << csvNumber(r.planning_cpu_seconds) << ","
-          << (solved ? csvNumber(r.makespan) : "") << "," << r.rounds << "," << (r.at_budget ? 1 : 0) << ","
+          << (solved ? csvNumber(r.makespan) : "") << "," << r.rounds << "," << (solved ? (r.sequential ? "1" : "0") : "")
+          << "," << (r.at_budget ? 1 : 0) << ","
           << (r.sim_passed ? (*r.sim_passed ? "passed" : "failed") : "") << "," << (r.sim_reused ? 1 : 0) << ","
           << csvField(solved ? r.sim_failure : r.reason) << "\n";
     }

@@ -57,6 +57,7 @@ struct RunRecord {
   double planning_cpu_seconds = 0.0;  ///< CPU time of the thread that made the call
   double makespan = 0.0;              ///< [s] of the plan
   int rounds = 0;                     ///< representation rounds the planner call ran
+  bool sequential = false;            ///< solved with a sequential plan (PlannerStats::sequential)
   bool at_budget = false;             ///< solved when the budget ran out: MM-DaSH's best plan so far (anytime)
   std::optional<bool> sim_passed;     ///< unset when not simulated
   std::string sim_failure;            ///< the first failed check ("" when passed)

@@ -55,7 +55,8 @@ std::string describePlanResult(const planner::PlanResult& result) {
       << " conflict-resolution nodes, " << s.scheduling_constraints << " scheduling constraints fed back, "
       << s.conflict_constraints << " constraints in the plan's conflict resolution\n";
   if (result.plan) {
-    out << std::setprecision(2) << "plan: " << result.plan->actions.size() << " actions, makespan " << s.makespan
+    out << std::setprecision(2) << "plan: " << result.plan->actions.size() << " actions, "
+        << (s.sequential ? "sequential (one object at a time), " : "") << "makespan " << s.makespan
         << " s (" << s.unresolved_makespan << " s before robot-robot conflicts are resolved)\n";
   }
   return out.str();

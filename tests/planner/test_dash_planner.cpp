@@ -54,6 +54,9 @@ TEST_CASE("greedy DaSH plans the default world into valid collision-free chains"
   CHECK(result.stats.makespan > 0.0);
   CHECK(result.stats.makespan == Approx(plan.duration()).margin(1e-9));
   CHECK(plan.statistics.at("status") == "solved");
+  // the two robots hand the cubes over side by side: no fallback to one object at a time
+  CHECK_FALSE(result.stats.sequential);
+  CHECK(plan.statistics.at("sequential") == false);
 }
 
 TEST_CASE("the same seed gives a byte-identical plan", "[planner][dash]") {
@@ -400,6 +403,9 @@ TEST_CASE("a robot standing at home over the only pick another robot can make fo
   REQUIRE(plan.actions.size() == 2);
   CHECK(plan.actions[0].robot == "r1");
   CHECK(plan.actions[1].robot == "r1");
+  // folding the idle robot away is what a sequential plan does
+  CHECK(result.stats.sequential);
+  CHECK(plan.statistics.at("sequential") == true);
   // r0 leaves home only to fold, and stands folded (upper arm leaning back) while r1 picks
   const core::RobotTrajectory& r0 = plan.trajectories[0];
   const double pick = plan.actions[0].end;

@@ -25,6 +25,7 @@ RunRecord solved(std::uint64_t seed, double planning, bool sim_passed) {
   r.planning_cpu_seconds = 0.5 * planning;
   r.makespan = 40.0 + static_cast<double>(seed);
   r.rounds = static_cast<int>(seed) + 1;
+  r.sequential = seed == 2;
   r.sim_passed = sim_passed;
   if (!sim_passed) r.sim_failure = "place cube_1 by r0: tilt 0.3 rad > 0.1 rad";
   return r;
@@ -159,6 +160,12 @@ TEST_CASE("bench plan CSV files read back with one line per row and per run", "[
                                                run_columns.begin());
   REQUIRE(rounds < run_columns.size());
   CHECK(csvFields(runs[2])[rounds] == std::to_string(rows[0].runs[1].rounds));
+  const auto sequential = static_cast<std::size_t>(
+      std::find(run_columns.begin(), run_columns.end(), "sequential") - run_columns.begin());
+  REQUIRE(sequential < run_columns.size());
+  CHECK(csvFields(runs[1])[sequential] == "0");
+  CHECK(csvFields(runs[2])[sequential] == "1");
+  CHECK(csvFields(runs[3])[sequential].empty());  // not solved
   CHECK(csvFields(runs[3]).back() == "time budget, round 3");  // quoted: holds a comma
   CHECK(csvFields(runs[6]).back() == "no grasp of \"b0\"");
   CHECK(csvFields(runs[2]).back() == "place cube_1 by r0: tilt 0.3 rad > 0.1 rad");
