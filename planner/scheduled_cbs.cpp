@@ -705,8 +705,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   };
   // Reroutes already tried, by kind (detour or parking), move and states to keep clear of: the
   // same conflict comes back in many nodes, and its answer is the same. Only new ones count
-  // against max_reroutes. A robot's way to a parking is not parked again: it would only go
-  // somewhere else first, in a chain of parkings that stand in the same robot's way.
+  // against max_reroutes.
   using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
   struct Reroute {
     bool parking = false;
@@ -722,8 +721,6 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
              std::equal(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
     });
     if (known != tried.end()) return known->parts;
-    const auto to_parking = [&](const Reroute& r) { return r.parking && r.parts && r.parts->first == &move; };
-    if (parking && std::any_of(tried.begin(), tried.end(), to_parking)) return std::nullopt;
     if (result.reroutes >= budget.max_reroutes) return std::nullopt;
     ++result.reroutes;
     tried.push_back({parking, &move, avoid, plan()});
@@ -760,7 +757,12 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   // configuration clear of `avoid` and waits there: the move split in two at that parking
   const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
-    if (avoid.size() > kMaxParkingObstacles) return std::nullopt;
+    // a robot's way to a parking is not parked again: it would only go somewhere else first, in
+    // a chain of parkings that stand in the same robot's way
+    const bool to_parking = std::any_of(tried.begin(), tried.end(), [&](const Reroute& r) {
+      return r.parking && r.parts && r.parts->first == seg.move;
+    });
+    if (to_parking || avoid.size() > kMaxParkingObstacles) return std::nullopt;
     const auto split = reroute(true, *seg.move, avoid, [&] {
       return graph.parking(*seg.move, [&](const core::ArmConfig& q) {
         const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
