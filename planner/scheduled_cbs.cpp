@@ -703,29 +703,6 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.makespan = makespanOf(schedule);
     return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++, 0.0, std::nullopt};
   };
-  // Reroutes already tried, by kind (detour or parking), move and states to keep clear of: the
-  // same conflict comes back in many nodes, and its answer is the same. Only new ones count
-  // against max_reroutes.
-  using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
-  struct Reroute {
-    bool parking = false;
-    const Move* move = nullptr;
-    std::vector<Obstacle> avoid;
-    std::optional<MoveParts> parts;
-  };
-  std::vector<Reroute> tried;
-  const auto reroute = [&](bool parking, const Move& move, const std::vector<Obstacle>& avoid,
-                           const std::function<std::optional<MoveParts>()>& plan) -> std::optional<MoveParts> {
-    const auto known = std::find_if(tried.begin(), tried.end(), [&](const Reroute& r) {
-      return r.parking == parking && r.move == &move && r.avoid.size() == avoid.size() &&
-             std::equal(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
-    });
-    if (known != tried.end()) return known->parts;
-    if (result.reroutes >= budget.max_reroutes) return std::nullopt;
-    ++result.reroutes;
-    tried.push_back({parking, &move, avoid, plan()});
-    return tried.back().parts;
-  };
   // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
   const auto detoured = [&](const Node& node, int segment, std::vector<Obstacle> avoid) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
@@ -738,16 +715,12 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     }
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
-    const std::optional<MoveParts> found = reroute(false, *it->original, obstacles, [&]() -> std::optional<MoveParts> {
-      const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-        return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
-                                     graph.scene().configuration(seg.robot, b, seg.finger), seg.held, obstacles);
-      });
-      if (move == nullptr) return std::nullopt;
-      return MoveParts{move, nullptr};
+    const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
+      return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
+                                   graph.scene().configuration(seg.robot, b, seg.finger),
+                                   seg.held, obstacles);
     });
-    if (!found) return std::nullopt;
-    const Move* move = found->first;
+    if (move == nullptr) return std::nullopt;
     std::vector<ScheduleSegment> segments = node.schedule.segments;
     segments[segment].move = move;
     segments[segment].duration = move->duration;
@@ -757,18 +730,11 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   // configuration clear of `avoid` and waits there: the move split in two at that parking
   const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
-    // a robot's way to a parking is not parked again: it would only go somewhere else first, in
-    // a chain of parkings that stand in the same robot's way
-    const bool to_parking = std::any_of(tried.begin(), tried.end(), [&](const Reroute& r) {
-      return r.parking && r.parts && r.parts->first == seg.move;
-    });
-    if (to_parking || avoid.size() > kMaxParkingObstacles) return std::nullopt;
-    const auto split = reroute(true, *seg.move, avoid, [&] {
-      return graph.parking(*seg.move, [&](const core::ArmConfig& q) {
-        const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
-        return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
-          return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
-        });
+    if (avoid.size() > kMaxParkingObstacles) return std::nullopt;
+    const auto split = graph.parking(*seg.move, [&](const core::ArmConfig& q) {
+      const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
+      return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
+        return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
       });
     });
     if (!split) return std::nullopt;
@@ -885,13 +851,16 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         result.home_blocked.push_back(blocked);
       }
     }
+    int& reroutes = result.reroutes;
     const std::vector<ScheduleSegment>& segments = node.schedule.segments;
     for (const auto& [robot, item, other, other_item] :
          {std::tuple{ra, conflict->item_a, rb, conflict->item_b}, std::tuple{rb, conflict->item_b, ra, conflict->item_a}}) {
       const Timeline& line = view.timeline(robot);
+      if (reroutes >= budget.max_reroutes) break;
       if (item >= 0) {
         const int segment = line.segments[item];
         if (segments[segment].move == nullptr) continue;
+        ++reroutes;
         if (std::optional<Node> child = detoured(node, segment, obstaclesDuring(view, node.schedule, segment, other))) {
           push(std::move(*child));
         }
@@ -904,6 +873,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
           if (node.schedule.start[before] + segments[before].duration >= node.schedule.start[segment]) continue;
         }
         const int busy = view.timeline(other).segments[other_item];
+        ++reroutes;
         if (std::optional<Node> child = parked(node, segment, obstaclesDuring(view, node.schedule, busy, other))) {
           push(std::move(*child));
         }

@@ -42,13 +42,11 @@
 // starts" and "B ends before A starts" — each a precedence (hyperarc-hyperarc or
 // vertex-hyperarc scheduling constraint) on the segment starts. When neither order can hold (a
 // cycle with the schedule's own precedences), the low level changes a robot's route on its
-// roadmap instead (at most max_reroutes roadmap searches per call; a reroute asked again, the
-// same move around the same states, in another node gets the answer found before):
+// roadmap instead (at most max_reroutes times per call):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
-//    configuration clear of the other's item and waits there; the move is split in two. The
-//    way to a parking is not parked again (a chain of parkings stays in the other's way).
+//    configuration clear of the other's item and waits there; the move is split in two.
 // A child repeats its parent's schedule up to their first difference, so the check starts at
 // the earlier of that and the parent's conflict. Conflicts that no order resolves are reported
 // back (ConflictResult::unordered) for the task search to avoid.
@@ -103,7 +101,7 @@ struct ConflictResolutionBudget {
   NodeOrder order = NodeOrder::kMakespan;
   /// Nodes whose makespan reaches this are dropped (none: every node is kept).
   std::optional<Millis> makespan_below;
-  int max_reroutes = 24;     ///< detours and parkings searched for (repeats are not searched again)
+  int max_reroutes = 24;     ///< detours and parkings tried (each a roadmap search)
   std::function<bool()> stop;  ///< true when time is up (may be empty)
 };
 
@@ -117,7 +115,7 @@ struct ConflictResult {
   Millis unresolved_makespan = 0;
   int nodes = 0;            ///< high-level nodes expanded
   int constraints = 0;      ///< precedences, detours and parkings in the solution
-  int reroutes = 0;         ///< detours and parkings searched for
+  int reroutes = 0;         ///< detours and parkings tried
   /// for kUnresolvable / kBudget: the last conflict found, or why no schedule could start
   /// (contradicting precedences, none shorter than makespan_below)
   std::string reason;
