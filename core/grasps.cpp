@@ -5,12 +5,12 @@
 
 namespace dashbed::core {
 
-std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance) {
+std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance, double top_reach) {
   const double max_width = kHandeMaxOpening - clearance;
   const double half_height = size.z() / 2;
   std::vector<BoxGrasp> grasps;
-  // from above the fingertips must stay clear of the surface
-  const double top_raise = std::max(0.0, kFingertipBeyondTcp + clearance - half_height);
+  // from above the fingertips must stay clear of the surface, and the top below top_reach
+  const double top_raise = std::max({0.0, kFingertipBeyondTcp + clearance - half_height, half_height - top_reach});
   // from above: approach -z of the object, closing along its x (k even) or y (k odd)
   for (int k = 0; k < 4; ++k) {
     const double yaw = k * std::numbers::pi / 2;

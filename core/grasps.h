@@ -2,6 +2,7 @@
 // Parallel-jaw grasps of box-shaped objects: where the TCP can be for a Hand-E to hold a box
 // that rests upright on a surface.
 
+#include <limits>
 #include <vector>
 
 #include <Eigen/Core>
@@ -32,12 +33,15 @@ struct BoxGrasp {
 
 /// The grasps of a box of `size` resting upright on a surface:
 ///  - from above, closing along each horizontal face normal (4), with the TCP at the box
-///    centre, or raised so the fingertips stay `clearance` above the surface;
+///    centre, or raised so the fingertips stay `clearance` above the surface, or so the box
+///    reaches at most `top_reach` above the TCP (a tall box, whose top would otherwise reach
+///    into the gripper housing);
 ///  - from each horizontal side with a horizontal closing axis (8), only where the box is tall
 ///    enough to hold the TCP high enough for the gripper body to clear the surface while the
 ///    pads still overlap the box by at least 10 mm.
 /// Face pairs wider than the gripper opening minus `clearance` are left out.
-std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance = kGraspClearance);
+std::vector<BoxGrasp> boxGrasps(const Eigen::Vector3d& size, double clearance = kGraspClearance,
+                                double top_reach = std::numeric_limits<double>::infinity());
 
 /// The heaviest object [kg] a parallel-jaw grip holds by friction alone while standing still:
 /// two pads each pressing with `grip_force` [N], Coulomb coefficient `friction` (the object's

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <numbers>
 #include <span>
 #include <stdexcept>
@@ -94,19 +95,20 @@ Relabelled uprightFrame(const Matrix3d& R_WO, const Vector3d& size) {
 }
 
 /// The grasps core::boxGrasps gives for the object in frame U (only those from above when
-/// `top_only`), in the object frame; the fingers close to half the box's width along the TCP x
+/// `top_only`; from above reaching at most `top_reach` above the TCP), in the object frame; the fingers close to half the box's width along the TCP x
 /// axis. Where the box is at least two fingertips long along the pads' width axis (TCP y), each
 /// also comes shifted along it to either end, the pads still fully on the box: on a long object
 /// (the shelf items) two grippers can then hold it side by side in a handoff, which the
 /// centred grasps alone never allow (the holder's 75 mm wide housing blocks the other's
 /// fingers). Never downwards in U (a side grasp of an upright item): the housing would reach
 /// into the surface the box rests on, which boxGrasps keeps it clear of. Fixed order.
-std::vector<Grasp> graspsOf(const Relabelled& U, const Vector3d& size, bool top_only) {
+std::vector<Grasp> graspsOf(const Relabelled& U, const Vector3d& size, bool top_only,
+                            double top_reach = std::numeric_limits<double>::infinity()) {
   Pose X_OU = Pose::Identity();
   X_OU.linear() = U.R_OU;
   const Vector3d up = U.R_OU.col(2);
   std::vector<Grasp> grasps;
-  for (const core::BoxGrasp& box_grasp : core::boxGrasps(U.size_U)) {
+  for (const core::BoxGrasp& box_grasp : core::boxGrasps(U.size_U, core::kGraspClearance, top_reach)) {
     if (top_only && box_grasp.approach != core::GraspApproach::kTop) continue;
     Grasp grasp;
     grasp.X_OT = X_OU * box_grasp.X_OT;
@@ -132,6 +134,16 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
   return 0.5 * size.dot(approach.cwiseAbs()) + grasp.X_OT.translation().dot(approach) + core::kFingertipBeyondTcp;
 }
 
+/// How far `object` may reach above the TCP in a grasp from above [m]: an object that goes into
+/// a bin (placed only from above) is held high enough for its top to stay kHandoffClearance
+/// out of the housing, a tall one above its centre; any other keeps the TCP at its centre (a
+/// tall one is then picked from the side, as shelf items are slid in).
+double topReach(const core::World& world, const ObjectSites& sites, int object) {
+  const int region = sites.goal_region[static_cast<std::size_t>(object)];
+  const bool into_bin = region >= 0 && !world.regions[static_cast<std::size_t>(region)].fixture.empty();  // bins' insides
+  return into_bin ? kHousingBehindTcp - kHandoffClearance : std::numeric_limits<double>::infinity();
+}
+
 /// Grasps a receiver may take of an object held in `giver`: those from above (graspsOf) of the
 /// object relabelled with each of its six faces up, i.e. every approach along a face normal,
 /// with the receiver coming in across both the giver's approach and closing axes (and so
@@ -147,21 +159,25 @@ double surroundDistance(const Vector3d& size, const Grasp& grasp) {
 /// approach, closing on the giver's face pair, where the two pairs of fingertips sit apart
 /// along the object's length (the pads' width axis of both): the giver at one end, the receiver
 /// in the middle or at the other end. The receiver then ends with a side grasp it can slide
-/// into a shelf. Grasps whose object would reach back into the receiver's housing are left out
-/// (an end-on grasp of a tall item with the TCP at its centre). Fixed order, no repeats.
-std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, double margin) {
+/// into a shelf. And on an item held at one end from above (a tall item going into a bin,
+/// topReach), the receiver may come head-on end to end, at the other end: the two pairs of
+/// fingertips kHandoffClearance apart along the item, the receiver's grasp from above with
+/// the item upside down. Grasps whose object would reach back into the receiver's housing
+/// (more than `top_reach` behind the TCP, or the housing's clearance) are left out (an
+/// end-on grasp of a tall item with the TCP at its centre). Fixed order, no repeats.
+std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, double margin, double top_reach) {
   const Vector3d giver_closing = giver.X_OT.linear().col(0);
   const Vector3d giver_width = giver.X_OT.linear().col(1);
   const Vector3d giver_approach = giver.X_OT.linear().col(2);
   std::vector<Grasp> grasps;
   for (int k = 0; k < 3; ++k) {
     for (const bool up : {true, false}) {
-      for (const Grasp& grasp : graspsOf(relabel(size, k, up), size, true)) {
+      for (const Grasp& grasp : graspsOf(relabel(size, k, up), size, true, top_reach)) {
         const Vector3d approach = grasp.X_OT.linear().col(2);
         // how far the object reaches back from the TCP, towards the housing (against the
         // approach): its half extent along the approach plus the TCP's offset along it
         const double behind = 0.5 * size.dot(approach.cwiseAbs()) + grasp.X_OT.translation().dot(approach);
-        if (behind > kHousingBehindTcp - kHandoffClearance) continue;
+        if (behind > kHousingBehindTcp - kHandoffClearance + kAxisTolerance) continue;  // (topReach exactly)
         const double width = size.dot(grasp.X_OT.linear().col(0).cwiseAbs());  // across the fingers
         if (width + 4 * margin >= core::kHandeMaxOpening) continue;
         // across: the receiver's pads, kFingertipWidth wide along the giver's closing axis, fit
@@ -176,7 +192,11 @@ std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, doub
                              std::abs(grasp.X_OT.linear().col(1).dot(giver_width)) > 0.5 &&
                              std::abs((grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_width)) >=
                                  kFingertipWidth + kHandoffClearance;
-        if (!across && !head_on) continue;
+        // the receiver's fingertips beyond the giver's along the item, coming the other way
+        const bool end_to_end = approach.dot(giver_approach) < -0.5 &&
+                                (grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_approach) >=
+                                    2 * core::kFingertipBeyondTcp + kHandoffClearance;
+        if (!across && !head_on && !end_to_end) continue;
         const auto same = [&grasp](const Grasp& other) { return sameGrasp(grasp, other); };
         if (std::none_of(grasps.begin(), grasps.end(), same)) grasps.push_back(grasp);
       }
@@ -761,7 +781,7 @@ std::vector<TransitionSample> TransitionSampler::pick(int hyperarc) {
   const Vector3d& size = c.world.objects[static_cast<std::size_t>(arc.object)].size;
   const Relabelled U = uprightFrame(p.X_WO.linear(), size);
   std::vector<TransitionSample> samples;
-  for (const Grasp& grasp : graspsOf(U, size, false)) {
+  for (const Grasp& grasp : graspsOf(U, size, false, topReach(c.world, c.sites, arc.object))) {
     p.grasp = grasp;
     if (auto sample = pickSample(c, p)) samples.push_back(std::move(*sample));
   }
@@ -804,7 +824,7 @@ const std::optional<core::HandoffZone>& TransitionSampler::handoffZone(int a, in
 
 std::vector<Grasp> TransitionSampler::handoffGrasps(int object, const Grasp& giver) const {
   return receiverGrasps(world_->world->objects.at(static_cast<std::size_t>(object)).size, giver,
-                        scene_->settings().margin);
+                        scene_->settings().margin, topReach(*world_->world, *sites_, object));
 }
 
 std::vector<TransitionSample> TransitionSampler::handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng,

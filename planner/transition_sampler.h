@@ -6,7 +6,9 @@
 //  pick    the robot starts at a pre-grasp configuration (cartesian_distance back along the
 //          grasp's approach axis), approaches in a straight TCP line, closes, dwells, lifts
 //          straight up. Grasps: core::boxGrasps of the object as it rests (from above and,
-//          where the gripper body clears the surface, from the side); on an object at least
+//          where the gripper body clears the surface, from the side; from above, an object
+//          that goes into a bin is held high enough for a tall one's top to stay out of the
+//          housing, any other at its centre); on an object at least
 //          two fingertips long across the closing axis also shifted to either end, so that two
 //          grippers fit side by side in a later handoff. A side grasp is instead approached
 //          straight down from above, the open fingers passing on either side of the item, where
@@ -24,7 +26,9 @@
 //          workspaces; the receiver starts at a pre-grasp configuration, approaches, closes;
 //          both hold for a dwell (the overlap), the giver opens, dwells and retreats along its
 //          approach axis, then the receiver retreats. The receiver's grasp closes on a
-//          different face pair than the giver's, so the grippers do not collide.
+//          different face pair than the giver's, so the grippers do not collide, or on the
+//          same pair apart along the object (a long object held side by side, or a tall item
+//          going into a bin held end to end, the receiver at the item's bottom).
 //
 // Every sample is checked with the collision checker along the curve the simulator follows
 // through its keys (key_curve.h): each piece between two keys is free against the static scene

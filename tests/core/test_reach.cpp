@@ -111,6 +111,14 @@ TEST_CASE("grasps of a resting cube come from above only", "[reach]") {
     if (g.approach != GraspApproach::kSide) continue;
     CHECK(0.06 + g.X_OT.translation().z() - kHandeBodyHalfWidth >= 0.0);
   }
+  // with a limit on how far it reaches above the TCP from above, the TCP moves up towards its
+  // top; a cube, well within the limit, keeps its centred grasps
+  for (const BoxGrasp& g : boxGrasps(Eigen::Vector3d(0.04, 0.04, 0.12), kGraspClearance, 0.0414)) {
+    if (g.approach == GraspApproach::kTop) CHECK(g.X_OT.translation().z() == Approx(0.06 - 0.0414));
+  }
+  for (const BoxGrasp& g : boxGrasps(Eigen::Vector3d::Constant(0.04), kGraspClearance, 0.0414)) {
+    CHECK(g.X_OT.translation().z() == 0.0);
+  }
   // wider than the opening: no grasp across that face pair
   CHECK(boxGrasps(Eigen::Vector3d(0.06, 0.03, 0.04)).size() == 2);
 }

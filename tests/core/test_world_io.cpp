@@ -352,6 +352,7 @@ const BadWorld kBadWorlds[] = {
     {"goal_unknown_object.yaml", "goal_unknown_object.yaml:24:14: goals[0].object: unknown object 'cube_9'"},
     {"goal_unknown_class.yaml", "goal_unknown_class.yaml:24:13: goals[0].class: no object has class 'blue'"},
     {"goal_unknown_region.yaml", "goal_unknown_region.yaml:24:30: goals[0].region: unknown region 'bin_blue'"},
+    {"goal_too_tall_for_bin.yaml", "goal_too_tall_for_bin.yaml:24:30: goals[0].region: object 'post_0' is 200.0 mm tall: standing in region 'bin_red' (90.0 mm high) its centre would be above it, and an object is in a region when its centre is"},
     {"goal_region_is_box.yaml", "goal_region_is_box.yaml:24:30: goals[0].region: unknown region 'table' ('table' is a box fixture; only bins are regions)"},
     {"goal_object_and_class.yaml", "goal_object_and_class.yaml:24:5: goals[0]: give either object or class, not both"},
     {"goal_neither.yaml", "goal_neither.yaml:24:5: goals[0]: needs an object or a class"},

@@ -330,8 +330,12 @@ void checkSample(const Setup& s, const TransitionSample& sample, int hyperarc) {
     REQUIRE(sample.grasp_before.has_value());
     REQUIRE(sample.grasp_after.has_value());
     REQUIRE(sample.grasp_after->finger == Approx(fingerOf(*sample.grasp_after)).margin(1e-12));
-    // different face pairs: the closing axes are perpendicular
-    REQUIRE(std::abs(sample.grasp_before->X_OT.linear().col(0).dot(sample.grasp_after->X_OT.linear().col(0))) < 1e-9);
+    // different face pairs (the closing axes perpendicular), or the same pair with the two
+    // grippers apart along the object (side by side, end to end): TCPs a fingertip (29.2 mm) apart
+    const bool perpendicular =
+        std::abs(sample.grasp_before->X_OT.linear().col(0).dot(sample.grasp_after->X_OT.linear().col(0))) < 1e-9;
+    const double apart = (sample.grasp_before->X_OT.translation() - sample.grasp_after->X_OT.translation()).norm();
+    REQUIRE((perpendicular || apart >= 0.0292));
     requireSamePose(tcp(g, 0), sample.X_WO * sample.grasp_before->X_OT);
     // receiver closes, both hold for a dwell, the giver opens, dwells, retreats, then the
     // receiver retreats
@@ -663,6 +667,62 @@ TEST_CASE("A receiver closes on the faces of a cube the giver's fingers leave fr
       }
     }
   }
+}
+
+TEST_CASE("A tall item going into a bin is picked from above at its top and handed over end to end",
+          "[planner][transition]") {
+  // housing front face 46.4 mm behind the TCP, 5 mm kept clear (reference S4/S5)
+  constexpr double kTopReach = 0.1325 - 0.0861 - 0.005;
+  const Setup& s = world("handwritten/x1b_tall_handoff_into_bin.yaml");  // 120 mm item, bin goal
+  TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
+  const double half_height = s.loaded.world->objects[0].size.z() / 2;
+  std::vector<std::pair<int, Grasp>> from_above;  // (picking robot, grasp)
+  for (const int h : s.hyperarcs(TransitionKind::kPick)) {
+    for (const TransitionSample& sample : sampler.pick(h)) {
+      checkSample(s, sample, h);
+      const Grasp& grasp = *sample.grasp_after;
+      if ((sample.X_WO * grasp.X_OT).linear().col(2).z() > -1.0 + 1e-6) continue;
+      // the TCP above the centre, the item's top just out of the housing
+      CHECK(half_height - grasp.X_OT.translation().z() == Approx(kTopReach).margin(1e-9));
+      from_above.emplace_back(s.task_space.hyperarcs()[static_cast<std::size_t>(h)].robot, grasp);
+    }
+  }
+  REQUIRE_FALSE(from_above.empty());
+  std::mt19937_64 rng(3);
+  int end_to_end = 0, end_to_end_handoffs = 0;
+  for (const auto& [robot, giver] : from_above) {
+    const Vector3d giver_approach = giver.X_OT.linear().col(2);
+    for (const Grasp& grasp : sampler.handoffGrasps(0, giver)) {
+      // coming the other way with its fingertips (13 mm beyond each TCP) 5 mm past the giver's
+      const double apart = (grasp.X_OT.translation() - giver.X_OT.translation()).dot(giver_approach);
+      if (grasp.X_OT.linear().col(2).dot(giver_approach) > -0.99) continue;
+      CHECK(apart >= 2 * 0.013 + 0.005 - 1e-9);
+      ++end_to_end;
+    }
+    for (const int h : s.hyperarcs(TransitionKind::kHandoff)) {
+      if (s.task_space.hyperarcs()[static_cast<std::size_t>(h)].robot != robot) continue;
+      for (const TransitionSample& sample : sampler.handoff(h, giver, rng, 4)) {
+        checkSample(s, sample, h);
+        if (sample.grasp_after->X_OT.linear().col(2).dot(giver_approach) < -0.99) ++end_to_end_handoffs;
+      }
+    }
+  }
+  CHECK(end_to_end > 0);
+  CHECK(end_to_end_handoffs > 0);
+  // the same item going onto a pad keeps its centred grasps: from above its top would be in
+  // the housing, so it is picked from the side only
+  const Setup& pad = world("handwritten/v05_shapes.yaml");
+  TransitionSampler pad_sampler(pad.loaded, pad.task_space, pad.scene, pad.sites);
+  int tall_picks = 0;
+  for (const int h : pad.hyperarcs(TransitionKind::kPick)) {
+    const int object = pad.task_space.hyperarcs()[static_cast<std::size_t>(h)].object;
+    if (pad.loaded.world->objects[static_cast<std::size_t>(object)].size.z() < 0.1) continue;
+    for (const TransitionSample& sample : pad_sampler.pick(h)) {
+      CHECK(std::abs((sample.X_WO * sample.grasp_after->X_OT).linear().col(2).z()) < 1e-6);
+      ++tall_picks;
+    }
+  }
+  CHECK(tall_picks > 0);
 }
 
 TEST_CASE("The transition sampler rejects hyperarcs of the wrong kind", "[planner][transition]") {
