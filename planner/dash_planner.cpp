@@ -279,6 +279,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (settings.sequential_fallback_rounds < 0) {
     throw std::invalid_argument("planner settings: sequential_fallback_rounds: must be >= 0");
   }
+  if (!(settings.conflict_focal_weight >= 1.0)) {
+    throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
+  }
   PlanResult result;
   PlannerStats& stats = result.stats;
   const Clock::time_point started = Clock::now();
@@ -364,19 +367,22 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   int fallback_round = 0;  // the round that found the first sequential plan
   std::optional<TransitionHistory> furthest;  // of the greedy queries without a plan so far
 
-  // conflict resolution of a task plan; keeps it when better than the best so far. Returns
-  // true when its failure gave a new scheduling constraint (at most the round's allowance).
+  // conflict resolution of a task plan (with this focal weight); keeps it when better than the
+  // best so far. Returns true when its failure gave a new scheduling constraint (at most the
+  // round's allowance).
   int feedbacks = 0;  // this round
-  const auto resolve = [&](const TransitionHistory& history) {
+  const auto resolve = [&](const TransitionHistory& history, double focal_weight) {
     ++stats.task_plans;
     // moves planned for parkings count as construction, like the search's
     const Clock::time_point t0 = Clock::now();
     const double built = graph->constructionSeconds();
-    ConflictResult resolved = resolveConflicts(*graph, history, conflict_budget);
+    ConflictResolutionBudget weighted = conflict_budget;
+    weighted.focal_weight = focal_weight;
+    ConflictResult resolved = resolveConflicts(*graph, history, weighted);
     stats.conflict_nodes += resolved.nodes;
     if (resolved.status == ConflictStatus::kResolved && history.sequential) {
       std::optional<ConflictResult> overlapping =
-          overlapSequentialSteps(*graph, history, conflict_budget, resolved, stats.conflict_nodes, say);
+          overlapSequentialSteps(*graph, history, weighted, resolved, stats.conflict_nodes, say);
       if (overlapping) resolved = std::move(*overlapping);
     }
     stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
@@ -468,7 +474,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       again = false;
       for (const QueryMode mode : {QueryMode::kDirect, QueryMode::kParkAtHome}) {
         const SearchResult greedy = greedy_query(mode);
-        if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan);
+        if (greedy.status == SearchStatus::kFound) again = resolve(*greedy.plan, settings.conflict_focal_weight);
         // a pair conflict resolution could not order in one history may be ordered in another:
         // constraints that leave no task plan (within the budget) are dropped (and none comes
         // back this round: the same plan would bring the same pair)
@@ -490,7 +496,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       feedbacks = 0;
       for (bool again = !best_schedule; again && !time_up();) {
         const SearchResult greedy = greedy_query(mode);
-        again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan);
+        again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan, settings.conflict_focal_weight);
       }
     }
     if (best_schedule && fallback_round == 0) fallback_round = round;
@@ -507,7 +513,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       for (int k = 0; k < settings.next_best_plans && !again && !time_up(); ++k) {
         const SearchResult next = search_timed([&] { return search.nextBest(search_budget); });
         if (next.status != SearchStatus::kFound || next.plan->makespan() >= best) break;
-        again = resolve(*next.plan);
+        again = resolve(*next.plan, 1.0);  // best first: the shortest schedule of each
       }
     }
     if (greedy_done) break;

@@ -5,7 +5,6 @@
 #include <cmath>
 #include <iterator>
 #include <limits>
-#include <queue>
 #include <sstream>
 #include <stdexcept>
 #include <tuple>
@@ -682,13 +681,30 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     std::optional<PairKnowledge> known;  ///< per robot pair, intervals known free
     std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
   };
-  const bool along_time = budget.order == NodeOrder::kAlongTime;
-  const auto worse = [along_time](const Node& x, const Node& y) {
-    const double x_clear = along_time ? -x.clear_until : 0.0, y_clear = along_time ? -y.clear_until : 0.0;
-    return std::make_tuple(x_clear, x.schedule.makespan, x.constraints(), x.order) >
-           std::make_tuple(y_clear, y.schedule.makespan, y.constraints(), y.order);
+  // which open node comes next: along time, the one free of conflicts for longest (ties: the
+  // shortest); by makespan the same, among those at most focal_weight times the shortest
+  const auto deeper = [](const Node& x, const Node& y) {
+    return std::make_tuple(-x.clear_until, x.schedule.makespan, x.constraints(), x.order) <
+           std::make_tuple(-y.clear_until, y.schedule.makespan, y.constraints(), y.order);
   };
-  std::priority_queue<Node, std::vector<Node>, decltype(worse)> open(worse);
+  std::vector<Node> open;
+  const auto take_next = [&]() {
+    double bound = std::numeric_limits<double>::infinity();
+    if (budget.order == NodeOrder::kMakespan) {
+      const auto shortest = std::min_element(open.begin(), open.end(), [](const Node& x, const Node& y) {
+        return x.schedule.makespan < y.schedule.makespan;
+      });
+      bound = budget.focal_weight * static_cast<double>(shortest->schedule.makespan);
+    }
+    std::optional<std::size_t> next;
+    for (std::size_t i = 0; i < open.size(); ++i) {
+      if (static_cast<double>(open[i].schedule.makespan) <= bound && (!next || deeper(open[i], open[*next]))) next = i;
+    }
+    Node node = std::move(open[*next]);
+    open[*next] = std::move(open.back());
+    open.pop_back();
+    return node;
+  };
   std::uint64_t created = 0;
   // a node: its segments at the earliest times their temporal network allows
   const auto make = [&](std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
@@ -703,6 +719,30 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.makespan = makespanOf(schedule);
     return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++, 0.0, std::nullopt};
   };
+  // Reroutes already tried, by kind (detour or parking), move and states to keep clear of: the
+  // same conflict comes back in many nodes, and asked again a reroute takes the answer found
+  // before (a new search could differ only where the roadmap grew meanwhile). Only new ones
+  // count against max_reroutes.
+  using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
+  struct Reroute {
+    bool parking = false;
+    const Move* move = nullptr;
+    std::vector<Obstacle> avoid;
+    std::optional<MoveParts> parts;
+  };
+  std::vector<Reroute> tried;
+  const auto reroute = [&](bool parking, const Move& move, const std::vector<Obstacle>& avoid,
+                           const std::function<std::optional<MoveParts>()>& plan) -> std::optional<MoveParts> {
+    const auto known = std::find_if(tried.begin(), tried.end(), [&](const Reroute& r) {
+      return r.parking == parking && r.move == &move && r.avoid.size() == avoid.size() &&
+             std::equal(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
+    });
+    if (known != tried.end()) return known->parts;
+    if (result.reroutes >= budget.max_reroutes) return std::nullopt;
+    ++result.reroutes;
+    tried.push_back({parking, &move, avoid, plan()});
+    return tried.back().parts;
+  };
   // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
   const auto detoured = [&](const Node& node, int segment, std::vector<Obstacle> avoid) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
@@ -715,12 +755,16 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     }
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
-    const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-      return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
-                                   graph.scene().configuration(seg.robot, b, seg.finger),
-                                   seg.held, obstacles);
+    const std::optional<MoveParts> found = reroute(false, *it->original, obstacles, [&]() -> std::optional<MoveParts> {
+      const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
+        return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
+                                     graph.scene().configuration(seg.robot, b, seg.finger), seg.held, obstacles);
+      });
+      if (move == nullptr) return std::nullopt;
+      return MoveParts{move, nullptr};
     });
-    if (move == nullptr) return std::nullopt;
+    if (!found) return std::nullopt;
+    const Move* move = found->first;
     std::vector<ScheduleSegment> segments = node.schedule.segments;
     segments[segment].move = move;
     segments[segment].duration = move->duration;
@@ -730,11 +774,18 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   // configuration clear of `avoid` and waits there: the move split in two at that parking
   const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
-    if (avoid.size() > kMaxParkingObstacles) return std::nullopt;
-    const auto split = graph.parking(*seg.move, [&](const core::ArmConfig& q) {
-      const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
-      return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
-        return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
+    // a robot's way to a parking is not parked again: it would only go somewhere else first, in
+    // a chain of parkings that stand in the same robot's way
+    const bool to_parking = std::any_of(tried.begin(), tried.end(), [&](const Reroute& r) {
+      return r.parking && r.parts && r.parts->first == seg.move;
+    });
+    if (to_parking || avoid.size() > kMaxParkingObstacles) return std::nullopt;
+    const auto split = reroute(true, *seg.move, avoid, [&] {
+      return graph.parking(*seg.move, [&](const core::ArmConfig& q) {
+        const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
+        return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
+          return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
+        });
       });
     });
     if (!split) return std::nullopt;
@@ -765,7 +816,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       result.reason = "no schedule is shorter than " + std::to_string(*budget.makespan_below) + " ms";
       return result;
     }
-    open.push(std::move(*root));
+    open.push_back(std::move(*root));
   } else {
     result.reason = "the schedule's own precedences contradict each other";
     return result;
@@ -775,8 +826,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       result.status = ConflictStatus::kBudget;
       return result;
     }
-    Node node = open.top();
-    open.pop();
+    Node node = take_next();
     ++result.nodes;
     std::vector<double> checked;
     const std::optional<RobotConflict> conflict =
@@ -801,7 +851,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         for (int b = a + 1; b < robots; ++b) known.same[a * robots + b] = std::min(differ[a], differ[b]);
       }
       child.known = std::move(known);
-      open.push(std::move(child));
+      open.push_back(std::move(child));
       return true;
     };
     // time: A before B, B before A
@@ -851,16 +901,13 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
         result.home_blocked.push_back(blocked);
       }
     }
-    int& reroutes = result.reroutes;
     const std::vector<ScheduleSegment>& segments = node.schedule.segments;
     for (const auto& [robot, item, other, other_item] :
          {std::tuple{ra, conflict->item_a, rb, conflict->item_b}, std::tuple{rb, conflict->item_b, ra, conflict->item_a}}) {
       const Timeline& line = view.timeline(robot);
-      if (reroutes >= budget.max_reroutes) break;
       if (item >= 0) {
         const int segment = line.segments[item];
         if (segments[segment].move == nullptr) continue;
-        ++reroutes;
         if (std::optional<Node> child = detoured(node, segment, obstaclesDuring(view, node.schedule, segment, other))) {
           push(std::move(*child));
         }
@@ -873,7 +920,6 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
           if (node.schedule.start[before] + segments[before].duration >= node.schedule.start[segment]) continue;
         }
         const int busy = view.timeline(other).segments[other_item];
-        ++reroutes;
         if (std::optional<Node> child = parked(node, segment, obstaclesDuring(view, node.schedule, busy, other))) {
           push(std::move(*child));
         }

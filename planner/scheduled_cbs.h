@@ -24,9 +24,12 @@
 // The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
 // constraints cannot all hold).
 //
-// High level: best-first over constraint sets by makespan (ties: fewer constraints, then
-// creation order), or depth first along time (NodeOrder); with a bound (makespan_below) nodes
-// not shorter than it are dropped. A node's schedule is checked robot against robot,
+// High level: best-first over constraint sets by makespan, as a focal search (ECBS's high
+// level): of the open nodes at most focal_weight times as long as the shortest, the one free of
+// conflicts for longest (ties: shorter, fewer constraints, created first); with focal_weight 1
+// the shortest first, of equally short ones the one free for longest. Or depth first along
+// time (NodeOrder). With a bound (makespan_below) nodes not shorter than it are dropped. A
+// node's schedule is checked robot against robot,
 // continuously in time: both robots' exact configurations — a move on its time-optimal
 // profile, a transition on the cubic through its keys that the simulator's interpolator
 // follows (controllers::TrajectoryInterpolator, at rest at the first and last key) — at a grid
@@ -42,11 +45,13 @@
 // starts" and "B ends before A starts" — each a precedence (hyperarc-hyperarc or
 // vertex-hyperarc scheduling constraint) on the segment starts. When neither order can hold (a
 // cycle with the schedule's own precedences), the low level changes a robot's route on its
-// roadmap instead (at most max_reroutes times per call):
+// roadmap instead (at most max_reroutes roadmap searches per call; a reroute asked again, the
+// same move around the same states, in another node gets the answer found before):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
-//    configuration clear of the other's item and waits there; the move is split in two.
+//    configuration clear of the other's item and waits there; the move is split in two. The
+//    way to a parking is not parked again (a chain of parkings stays in the other's way).
 // A child repeats its parent's schedule up to their first difference, so the check starts at
 // the earlier of that and the parent's conflict. Conflicts that no order resolves are reported
 // back (ConflictResult::unordered) for the task search to avoid.
@@ -89,7 +94,9 @@ struct Schedule {
 
 /// The order in which the high level expands its nodes.
 enum class NodeOrder {
-  kMakespan,   ///< best first: the shortest schedule first
+  /// best first: the shortest schedule first, or any within focal_weight of it that is free of
+  /// conflicts for longer
+  kMakespan,
   /// depth first along time: the node free of conflicts for longest first (ties: the shortest);
   /// finds a schedule in fewer nodes where any below a bound will do (crowded sequential plans
   /// overlapping), not the shortest
@@ -99,9 +106,14 @@ enum class NodeOrder {
 struct ConflictResolutionBudget {
   int max_nodes = 2000;       ///< high-level nodes expanded
   NodeOrder order = NodeOrder::kMakespan;
+  /// kMakespan's focal weight (>= 1): how much longer than the shortest open node a node may
+  /// be and still come first for being free of conflicts for longer. Above 1 the search goes
+  /// deeper before it goes wider: fewer nodes to a schedule, which is then at most that factor
+  /// longer than the shortest node open when it was taken.
+  double focal_weight = 1.0;
   /// Nodes whose makespan reaches this are dropped (none: every node is kept).
   std::optional<Millis> makespan_below;
-  int max_reroutes = 24;     ///< detours and parkings tried (each a roadmap search)
+  int max_reroutes = 24;     ///< detours and parkings searched for (repeats are not searched again)
   std::function<bool()> stop;  ///< true when time is up (may be empty)
 };
 
@@ -115,7 +127,7 @@ struct ConflictResult {
   Millis unresolved_makespan = 0;
   int nodes = 0;            ///< high-level nodes expanded
   int constraints = 0;      ///< precedences, detours and parkings in the solution
-  int reroutes = 0;         ///< detours and parkings tried
+  int reroutes = 0;         ///< detours and parkings searched for
   /// for kUnresolvable / kBudget: the last conflict found, or why no schedule could start
   /// (contradicting precedences, none shorter than makespan_below)
   std::string reason;

@@ -70,6 +70,12 @@ void addPlannerOptions(CLI::App& command, PlannerChoice& choice) {
   command.add_option("--fallback-rounds", choice.fallback_rounds, kFallbackRoundsHelp)
       ->check(CLI::NonNegativeNumber)
       ->capture_default_str();
+  command.add_option("--conflict-focal", choice.conflict_focal,
+                     "focal weight of the greedy queries' conflict resolution (>= 1): a node up to this factor longer "
+                     "than the shortest comes first when free of conflicts for longer (1: the shortest first; "
+                     "optimal's Next-Best Search always takes the shortest first)")
+      ->check(CLI::Range(1.0, 100.0))
+      ->capture_default_str();
   command.add_flag("--no-set-aside{false}", choice.set_aside,
                    "never set an object down anywhere but at its goal (by default an object standing where another's "
                    "every pick reaches over it may be set aside for a while)");

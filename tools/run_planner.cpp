@@ -23,6 +23,7 @@ planner::PlanResult planWorld(const core::LoadedWorld& world, const PlannerChoic
   settings.seed = choice.seed;
   settings.max_rounds = choice.max_rounds;
   settings.sequential_fallback_rounds = choice.fallback_rounds;
+  settings.conflict_focal_weight = choice.conflict_focal;
   settings.set_aside = choice.set_aside;
   planner::PlannerBudget budget;
   const auto started = std::chrono::steady_clock::now();

@@ -33,6 +33,8 @@ struct PlannerChoice {
   int fallback_rounds = planner::PlannerSettings{}.sequential_fallback_rounds;
   bool verbose = false;           ///< the planner's progress on stderr
   bool set_aside = true;          ///< objects in the way of another's every pick may be set aside
+  /// the greedy queries' conflict-resolution focal weight (>= 1)
+  double conflict_focal = planner::PlannerSettings{}.conflict_focal_weight;
 };
 
 /// The help text of --fallback-rounds (plan, run, bench plan, stress).
@@ -40,8 +42,8 @@ inline constexpr const char* kFallbackRoundsHelp =
     "rounds of representation expansion a sequential plan (one object at a time) waits for a plan whose robots "
     "work side by side; more find shorter plans on crowded worlds, taking longer";
 
-/// Adds --method, --seed, --time-budget, --max-rounds, --fallback-rounds, --no-set-aside and
-/// --verbose to a command.
+/// Adds --method, --seed, --time-budget, --max-rounds, --fallback-rounds, --conflict-focal,
+/// --no-set-aside and --verbose to a command.
 void addPlannerOptions(CLI::App& command, PlannerChoice& choice);
 
 /// Runs the DaSH planner on `world`. Throws std::invalid_argument for a bad choice (unknown

@@ -525,3 +525,10 @@ TEST_CASE("a sequential greedy query looks as far as a constrained one", "[plann
     CHECK(greedySearchExpansions(settings, mode, true, 2, 3000) == 6000);
   }
 }
+
+TEST_CASE("a focal weight below 1 is refused", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  PlannerSettings settings;
+  settings.conflict_focal_weight = 0.9;
+  REQUIRE_THROWS_WITH(solve(world, settings), Catch::Matchers::Contains("conflict_focal_weight: must be >= 1"));
+}
