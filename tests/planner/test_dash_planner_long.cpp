@@ -22,6 +22,21 @@ using namespace dashbed;
 using namespace dashbed::planner;
 using namespace dashbed::planner::testing;
 
+namespace {
+
+/// solve() on `world`, which must solve it with a plan whose actions are valid and whose robots
+/// never collide along its timing.
+PlanResult solvedValid(const core::LoadedWorld& world, const PlannerSettings& settings) {
+  PlanResult result = solve(world, settings);
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  return result;
+}
+
+}  // namespace
+
 TEST_CASE("shelving task plans fill the back slot before the front slot in front of it", "[planner][dash][shelf]") {
   // the scheduling constraint at the level of the hyperpath search: a place into a back slot
   // touches the goal site of the object in front, so the front object waits
@@ -77,11 +92,7 @@ TEST_CASE("shelving plans solve end to end, back slots first, with conflicts fed
                                             : core::validateWorld(tools::generateShelving({4, seed}));
   PlannerSettings settings = testSettings();
   settings.seed = seed;
-  const PlanResult result = solve(world, settings);
-  INFO(result.reason);
-  REQUIRE(result.status == PlannerStatus::kSolved);
-  requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  const PlanResult result = solvedValid(world, settings);
   std::map<std::string, double> placed_at;  // region -> start of its place (not setting aside)
   for (const core::PlanAction& a : result.plan->actions) {
     if (a.type == core::ActionType::kPlace && !a.region.empty()) placed_at[a.region] = a.start;
@@ -101,11 +112,7 @@ TEST_CASE("three robots in a layout of their own get valid collision-free plans"
   // r2 stands at the side of the table between the two others: its moves cross theirs, and
   // conflict resolution needs orderings, detours or parkings
   const core::LoadedWorld world = core::loadWorld(worldPath("sort_3r_6c_side.yaml"));
-  const PlanResult result = solve(world, testSettings());
-  INFO(result.reason);
-  REQUIRE(result.status == PlannerStatus::kSolved);
-  requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  const PlanResult result = solvedValid(world, testSettings());
   std::set<std::string> busy;
   for (const core::PlanAction& a : result.plan->actions) busy.insert(a.robot);
   CHECK(busy.size() == 3);
@@ -117,11 +124,7 @@ TEST_CASE("six robots in two rows hand every cube along the table", "[planner][d
   // side while others work next to them)
   const core::LoadedWorld world =
       core::validateWorld(tools::generateSorting({6, 4, 4, tools::StartLayout::kCross, 1, tools::RobotLayout::kRows}));
-  const PlanResult result = solve(world, testSettings());
-  INFO(result.reason);
-  REQUIRE(result.status == PlannerStatus::kSolved);
-  requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  const PlanResult result = solvedValid(world, testSettings());
   std::map<std::string, int> handoffs;  // object -> handoffs
   std::set<std::string> busy;
   for (const core::PlanAction& a : result.plan->actions) {
@@ -143,46 +146,25 @@ TEST_CASE("five robots in a ring hand cubes across their shared centre", "[plann
   // cross start in a ring: each cube starts in front of the robot across from its bin's robot
   const core::LoadedWorld world =
       core::validateWorld(tools::generateSorting({5, 5, 4, tools::StartLayout::kCross, 3, tools::RobotLayout::kRing}));
-  const PlanResult result = solve(world, testSettings());
-  INFO(result.reason);
-  REQUIRE(result.status == PlannerStatus::kSolved);
-  requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  const PlanResult result = solvedValid(world, testSettings());
   int handoffs = 0;
   for (const core::PlanAction& a : result.plan->actions) handoffs += a.type == core::ActionType::kHandoff ? 1 : 0;
   CHECK(handoffs >= static_cast<int>(world.world->objects.size()));
 }
 
-TEST_CASE("four robots hand twelve crossing cubes side by side, not one at a time", "[planner][dash]") {
-  // the paper's square of four robots: every cube needs a handoff, and the robots reach into
-  // the shared centre at once
-  const core::LoadedWorld world = core::validateWorld(tools::generateSorting({4, 12, 4, tools::StartLayout::kCross, 2}));
-  PlannerSettings settings;  // as `dashbed plan --seed 2`
-  settings.seed = 2;
-  settings.max_rounds = 8;
-  const PlanResult result = solve(world, settings);
-  INFO(result.reason);
-  REQUIRE(result.status == PlannerStatus::kSolved);
-  requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
-  CHECK_FALSE(result.stats.sequential);
-}
-
-TEST_CASE("a focal weight above 1 resolves crossing cubes in fewer nodes than best first, within its factor",
+TEST_CASE("four robots hand twelve crossing cubes side by side, a focal weight above 1 in fewer nodes",
           "[planner][dash]") {
-  // the square of four robots with 12 crossing cubes: one task plan, whose conflicts best first
-  // (focal weight 1) resolves in 267 nodes, Greedy's default weight in 157
+  // the paper's square of four robots: every cube needs a handoff, and the robots reach into
+  // the shared centre at once. One task plan, whose conflicts best first (focal weight 1)
+  // resolves in 267 nodes, Greedy's default weight in 157, within its factor of best first's
   const core::LoadedWorld world = core::validateWorld(tools::generateSorting({4, 12, 4, tools::StartLayout::kCross, 2}));
   const auto run = [&](double focal_weight) {
     PlannerSettings settings;
     settings.seed = 2;
     settings.max_rounds = 8;
     settings.conflict_focal_weight = focal_weight;
-    const PlanResult result = solve(world, settings);
-    INFO(result.reason);
-    REQUIRE(result.status == PlannerStatus::kSolved);
-    requireValidActions(*result.plan, *world.world);
-    requireNoRobotCollision(*result.plan, world);
+    const PlanResult result = solvedValid(world, settings);
+    CHECK_FALSE(result.stats.sequential);
     return result.stats;
   };
   const PlannerStats best_first = run(1.0);
