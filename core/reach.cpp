@@ -84,19 +84,10 @@ void requireReachable(const World& world, const ReachMap& reach) {
     const Region* region = world.goalRegionOf(object);
     if (region != nullptr && reach.goal[o].empty()) {
       // name the goal that sends the object there
-      const Goal* goal = nullptr;
-      std::size_t goal_index = 0;
-      for (std::size_t g = 0; g < world.goals.size() && goal == nullptr; ++g) {
-        const Goal& candidate = world.goals[g];
-        if (candidate.region == region->name &&
-            (candidate.object == object.name ||
-             (!candidate.object_class.empty() && candidate.object_class == object.object_class))) {
-          goal = &candidate;
-          goal_index = g;
-        }
-      }
+      const Goal* goal = world.goalOf(object);
+      const auto goal_index = static_cast<std::size_t>(goal - world.goals.data());
       std::ostringstream msg;
-      msg << formatLocation(goal != nullptr ? goal->where : region->where) << ": goals[" << goal_index
+      msg << formatLocation(goal->where) << ": goals[" << goal_index
           << "].region: region '" << region->name << "' (goal of object '" << object.name
           << "') is out of every robot's reach (no IK solution for placing it there)";
       throw WorldError(msg.str());

@@ -56,17 +56,20 @@ const FixtureSpec* World::findFixture(std::string_view wanted) const {
   return findByName(fixtures, wanted);
 }
 
-const Region* World::goalRegionOf(const ObjectSpec& object) const {
+const Goal* World::goalOf(const ObjectSpec& object) const {
   for (const Goal& goal : goals) {
-    if (!goal.object.empty() && goal.object == object.name) return findRegion(goal.region);
+    if (!goal.object.empty() && goal.object == object.name) return &goal;
   }
   if (object.object_class.empty()) return nullptr;
   for (const Goal& goal : goals) {
-    if (goal.object.empty() && goal.object_class == object.object_class) {
-      return findRegion(goal.region);
-    }
+    if (goal.object.empty() && goal.object_class == object.object_class) return &goal;
   }
   return nullptr;
+}
+
+const Region* World::goalRegionOf(const ObjectSpec& object) const {
+  const Goal* goal = goalOf(object);
+  return goal != nullptr ? findRegion(goal->region) : nullptr;
 }
 
 void deriveFixtureGeometry(World& world) {

@@ -181,7 +181,10 @@ struct World {
   const Region* findRegion(std::string_view name) const;
   const FixtureSpec* findFixture(std::string_view name) const;
 
-  /// The goal region of an object (object goals first, then class goals), or nullptr.
+  /// The goal that sends an object somewhere (its object goal first, then its class's), or
+  /// nullptr.
+  const Goal* goalOf(const ObjectSpec& object) const;
+  /// The region of goalOf(object), or nullptr.
   const Region* goalRegionOf(const ObjectSpec& object) const;
 };
 

@@ -790,17 +790,12 @@ void Reader::checkGoals(const World& world) const {
   for (const ObjectSpec& object : world.objects) {
     const Region* region = world.goalRegionOf(object);
     if (region == nullptr || object.size.z() / 2 <= region->size.z() + 1e-9) continue;
-    for (std::size_t i = 0; i < world.goals.size(); ++i) {
-      const Goal& goal = world.goals[i];
-      if (goal.object == object.name || (goal.object.empty() && goal.object_class == object.object_class &&
-                                         world.goalRegionOf(object) == world.findRegion(goal.region))) {
-        fail(goal_uses_[i].region, "object '" + object.name + "' is " + millimetres(object.size.z()) +
-                                       " tall: standing in region '" + region->name + "' (" +
-                                       millimetres(region->size.z()) +
-                                       " high) its centre would be above it, and an object is in a region when its "
-                                       "centre is");
-      }
-    }
+    const auto goal = static_cast<std::size_t>(world.goalOf(object) - world.goals.data());
+    fail(goal_uses_[goal].region, "object '" + object.name + "' is " + millimetres(object.size.z()) +
+                                      " tall: standing in region '" + region->name + "' (" +
+                                      millimetres(region->size.z()) +
+                                      " high) its centre would be above it, and an object is in a region when its "
+                                      "centre is");
   }
 }
 

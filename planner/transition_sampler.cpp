@@ -95,7 +95,8 @@ Relabelled uprightFrame(const Matrix3d& R_WO, const Vector3d& size) {
 }
 
 /// The grasps core::boxGrasps gives for the object in frame U (only those from above when
-/// `top_only`; from above reaching at most `top_reach` above the TCP), in the object frame; the fingers close to half the box's width along the TCP x
+/// `top_only`; from above reaching at most `top_reach` above the TCP), in the object frame;
+/// the fingers close to half the box's width along the TCP x
 /// axis. Where the box is at least two fingertips long along the pads' width axis (TCP y), each
 /// also comes shifted along it to either end, the pads still fully on the box: on a long object
 /// (the shelf items) two grippers can then hold it side by side in a handoff, which the
@@ -163,8 +164,8 @@ double topReach(const core::World& world, const ObjectSites& sites, int object) 
 /// topReach), the receiver may come head-on end to end, at the other end: the two pairs of
 /// fingertips kHandoffClearance apart along the item, the receiver's grasp from above with
 /// the item upside down. Grasps whose object would reach back into the receiver's housing
-/// (more than `top_reach` behind the TCP, or the housing's clearance) are left out (an
-/// end-on grasp of a tall item with the TCP at its centre). Fixed order, no repeats.
+/// (within kHandoffClearance of it) are left out (an end-on grasp of a tall item with the TCP
+/// at its centre, where `top_reach` does not raise it). Fixed order, no repeats.
 std::vector<Grasp> receiverGrasps(const Vector3d& size, const Grasp& giver, double margin, double top_reach) {
   const Vector3d giver_closing = giver.X_OT.linear().col(0);
   const Vector3d giver_width = giver.X_OT.linear().col(1);
