@@ -18,6 +18,17 @@ using Clock = std::chrono::steady_clock;
 
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
+/// [s] the time `work` takes, less the construction time it adds meanwhile: the search and
+/// conflict resolution plan moves lazily (for the task plan, detours, parkings), which counts
+/// as the representation's construction.
+template <class Work>
+double secondsBeyondConstruction(const MotionHypergraph& graph, Work&& work) {
+  const Clock::time_point t0 = Clock::now();
+  const double built = graph.constructionSeconds();
+  work();
+  return secondsSince(t0) - (graph.constructionSeconds() - built);
+}
+
 /// "12.34 s"
 std::string secondsText(Millis t) {
   std::ostringstream out;
@@ -97,6 +108,16 @@ std::string objectList(const core::World& world, const std::vector<int>& objects
   return text;
 }
 
+/// The first `limit` items joined by `separator`, then " and N more<what>" for the rest:
+/// reasons name a few of many things.
+std::string firstFew(const std::vector<std::string>& items, std::size_t limit, const std::string& separator,
+                     const std::string& what = "") {
+  std::string text;
+  for (std::size_t k = 0; k < items.size() && k < limit; ++k) text += (k == 0 ? "" : separator) + items[k];
+  if (items.size() > limit) text += " and " + std::to_string(items.size() - limit) + " more" + what;
+  return text;
+}
+
 /// "; every pick of green_3 passes over blue_0 and blue_3 at their starts": crowdedPicks, at
 /// most `limit` objects.
 std::string crowdedPicksText(MotionHypergraph& graph, std::size_t limit) {
@@ -106,10 +127,7 @@ std::string crowdedPicksText(MotionHypergraph& graph, std::size_t limit) {
     lines.push_back("every pick of " + world.objects[static_cast<std::size_t>(pick.object)].name + " passes over " +
                     objectList(world, pick.others) + " at " + (pick.others.size() == 1 ? "its start" : "their starts"));
   }
-  std::string text;
-  for (std::size_t k = 0; k < lines.size() && k < limit; ++k) text += "; " + lines[k];
-  if (lines.size() > limit) text += " and " + std::to_string(lines.size() - limit) + " more objects";
-  return text;
+  return lines.empty() ? "" : "; " + firstFew(lines, limit, "; ", " objects");
 }
 
 /// "; the furthest task plan tried placed 11 of 12 objects, not blue_5 (held by r1)": how far
@@ -132,11 +150,8 @@ std::string furthestText(const MotionHypergraph& graph, const TransitionHistory&
     return "; the furthest task plan tried placed all " + std::to_string(goals) +
            " objects, but a robot found no way back to where it rests";
   }
-  std::string text = "; the furthest task plan tried placed " + std::to_string(furthest.objectsAtGoal()) + " of " +
-                     std::to_string(goals) + " objects, not ";
-  for (std::size_t k = 0; k < left.size() && k < 4; ++k) text += (k == 0 ? "" : ", ") + left[k];
-  if (left.size() > 4) text += " and " + std::to_string(left.size() - 4) + " more";
-  return text;
+  return "; the furthest task plan tried placed " + std::to_string(furthest.objectsAtGoal()) + " of " +
+         std::to_string(goals) + " objects, not " + firstFew(left, 4, ", ");
 }
 
 /// The objects some other object's every pick passes over (crowdedPicks), in id order.
@@ -185,8 +200,9 @@ std::string describeSetAsideSites(const core::World& world, const ObjectSites& s
 
 /// A sequential plan's steps may overlap where they keep clear of each other: conflict
 /// resolution runs again without the steps' order and any schedule shorter than theirs one
-/// after another will do. Where the shortest first finds none, the node free of conflicts for
-/// longest first gets a second try. Returns the overlapping schedule, or nothing when neither
+/// after another will do. Where the task plan's order (`budget`: the shortest first within
+/// its focal weight) finds none, the node free of conflicts for longest first gets a second
+/// try. Returns the overlapping schedule, or nothing when neither
 /// finds one shorter; adds the nodes expanded to `nodes` and says one line per try.
 std::optional<ConflictResult> overlapSequentialSteps(MotionHypergraph& graph, const TransitionHistory& history,
                                                      ConflictResolutionBudget budget,
@@ -300,11 +316,11 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   auto task_space = std::make_unique<const TaskSpaceHypergraph>(
       TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites)));
   double task_space_seconds = secondsSince(started);
-  stats.task_vertices = task_space->numVertices();
-  stats.task_hyperarcs = task_space->numHyperarcs();
   auto graph = std::make_unique<MotionHypergraph>(world, *task_space, sites, settings.seed, settings.representation);
   const auto record = [&] {
     stats.construction_seconds = task_space_seconds + graph->constructionSeconds();
+    stats.task_vertices = task_space->numVertices();
+    stats.task_hyperarcs = task_space->numHyperarcs();
     stats.rounds = graph->rounds();
     stats.motion_vertices = graph->numVertices();
     stats.motion_transitions = graph->numTransitions();
@@ -349,8 +365,6 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       task_space_seconds += secondsSince(t0) + graph->constructionSeconds();
       graph = std::make_unique<MotionHypergraph>(world, *with_aside, sites, settings.seed, settings.representation);
       task_space = std::move(with_aside);
-      stats.task_vertices = task_space->numVertices();
-      stats.task_hyperarcs = task_space->numHyperarcs();
       stats.set_aside_sites = static_cast<int>(given.size());
       say("set-aside sites: " + describeSetAsideSites(*world.world, sites, given) + crowdedPicksText(*graph, 4));
     }
@@ -373,19 +387,18 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   int feedbacks = 0;  // this round
   const auto resolve = [&](const TransitionHistory& history, double focal_weight) {
     ++stats.task_plans;
-    // moves planned for parkings count as construction, like the search's
-    const Clock::time_point t0 = Clock::now();
-    const double built = graph->constructionSeconds();
     ConflictResolutionBudget weighted = conflict_budget;
     weighted.focal_weight = focal_weight;
-    ConflictResult resolved = resolveConflicts(*graph, history, weighted);
-    stats.conflict_nodes += resolved.nodes;
-    if (resolved.status == ConflictStatus::kResolved && history.sequential) {
-      std::optional<ConflictResult> overlapping =
-          overlapSequentialSteps(*graph, history, weighted, resolved, stats.conflict_nodes, say);
-      if (overlapping) resolved = std::move(*overlapping);
-    }
-    stats.conflict_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
+    ConflictResult resolved;
+    stats.conflict_seconds += secondsBeyondConstruction(*graph, [&] {
+      resolved = resolveConflicts(*graph, history, weighted);
+      stats.conflict_nodes += resolved.nodes;
+      if (resolved.status == ConflictStatus::kResolved && history.sequential) {
+        std::optional<ConflictResult> overlapping =
+            overlapSequentialSteps(*graph, history, weighted, resolved, stats.conflict_nodes, say);
+        if (overlapping) resolved = std::move(*overlapping);
+      }
+    });
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
       if (feedbacks < settings.scheduling_constraints_per_round) {
@@ -425,11 +438,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     return false;
   };
   const auto search_timed = [&](auto&& query) {
-    // the search builds the representation lazily: that time counts as construction
-    const Clock::time_point t0 = Clock::now();
-    const double built = graph->constructionSeconds();
-    SearchResult found = query();
-    stats.search_seconds += secondsSince(t0) - (graph->constructionSeconds() - built);
+    SearchResult found;
+    stats.search_seconds += secondsBeyondConstruction(*graph, [&] { found = query(); });
     stats.expansions += found.expansions;
     const char* status[] = {"found a task plan", "found none", "ran out of its budget"};
     std::string line = std::string(status[static_cast<int>(found.status)]) + " after " +
@@ -553,11 +563,11 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     const bool no_task_plan = !best_history && stats.task_plans == 0;
     if (no_task_plan) result.reason += crowdedPicksText(*graph, 4);
     if (no_task_plan && furthest) result.reason += furthestText(*graph, *furthest);
-    const std::vector<int> unsampled = no_task_plan ? graph->unsampledHyperarcs() : std::vector<int>{};
-    for (std::size_t k = 0; k < unsampled.size() && k < 4; ++k) {
-      result.reason += (k == 0 ? "; never sampled: " : ", ") + describeHyperarc(*world.world, *task_space, unsampled[k]);
+    std::vector<std::string> unsampled;
+    if (no_task_plan) {
+      for (int id : graph->unsampledHyperarcs()) unsampled.push_back(describeHyperarc(*world.world, *task_space, id));
     }
-    if (unsampled.size() > 4) result.reason += " and " + std::to_string(unsampled.size() - 4) + " more";
+    if (!unsampled.empty()) result.reason += "; never sampled: " + firstFew(unsampled, 4, ", ");
     return result;
   }
   stats.makespan = toSeconds(best);

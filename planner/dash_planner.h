@@ -59,7 +59,7 @@ struct PlannerSettings {
   /// lets the constrained search look further
   std::uint64_t constrained_search_expansions = 1000;
   /// per conflict resolution (a sequential plan gets up to three: its steps one after
-  /// another, then overlapping best first and depth first along time)
+  /// another, then overlapping in the task plan's order and depth first along time)
   int conflict_nodes = 500;
   /// The focal weight (ConflictResolutionBudget::focal_weight, >= 1) of the conflict
   /// resolution of the greedy queries' task plans (Greedy's, and MM-DaSH's until it has

@@ -689,19 +689,21 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   };
   std::vector<Node> open;
   const auto take_next = [&]() {
+    // the shortest always qualifies, whatever the weight
+    std::size_t next = 0;
     double bound = std::numeric_limits<double>::infinity();
     if (budget.order == NodeOrder::kMakespan) {
-      const auto shortest = std::min_element(open.begin(), open.end(), [](const Node& x, const Node& y) {
-        return x.schedule.makespan < y.schedule.makespan;
-      });
-      bound = budget.focal_weight * static_cast<double>(shortest->schedule.makespan);
+      next = static_cast<std::size_t>(std::min_element(open.begin(), open.end(), [](const Node& x, const Node& y) {
+                                        return x.schedule.makespan < y.schedule.makespan;
+                                      }) -
+                                      open.begin());
+      bound = budget.focal_weight * static_cast<double>(open[next].schedule.makespan);
     }
-    std::optional<std::size_t> next;
     for (std::size_t i = 0; i < open.size(); ++i) {
-      if (static_cast<double>(open[i].schedule.makespan) <= bound && (!next || deeper(open[i], open[*next]))) next = i;
+      if (static_cast<double>(open[i].schedule.makespan) <= bound && deeper(open[i], open[next])) next = i;
     }
-    Node node = std::move(open[*next]);
-    open[*next] = std::move(open.back());
+    Node node = std::move(open[next]);
+    if (next + 1 != open.size()) open[next] = std::move(open.back());
     open.pop_back();
     return node;
   };
@@ -719,10 +721,10 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.makespan = makespanOf(schedule);
     return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++, 0.0, std::nullopt};
   };
-  // Reroutes already tried, by kind (detour or parking), move and states to keep clear of: the
-  // same conflict comes back in many nodes, and asked again a reroute takes the answer found
-  // before (a new search could differ only where the roadmap grew meanwhile). Only new ones
-  // count against max_reroutes.
+  // Reroutes already tried, by kind (detour or parking), move and states to keep clear of (in
+  // any order): the same conflict comes back in many nodes, and asked again a reroute takes the
+  // answer found before (a new search could differ only where the roadmap grew meanwhile). Only
+  // new ones count against max_reroutes.
   using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
   struct Reroute {
     bool parking = false;
@@ -735,11 +737,10 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
                            const std::function<std::optional<MoveParts>()>& plan) -> std::optional<MoveParts> {
     const auto known = std::find_if(tried.begin(), tried.end(), [&](const Reroute& r) {
       return r.parking == parking && r.move == &move && r.avoid.size() == avoid.size() &&
-             std::equal(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
+             std::is_permutation(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
     });
     if (known != tried.end()) return known->parts;
-    if (result.reroutes >= budget.max_reroutes) return std::nullopt;
-    ++result.reroutes;
+    if (tried.size() >= static_cast<std::size_t>(budget.max_reroutes)) return std::nullopt;
     tried.push_back({parking, &move, avoid, plan()});
     return tried.back().parts;
   };
@@ -776,10 +777,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     const ScheduleSegment& seg = node.schedule.segments[segment];
     // a robot's way to a parking is not parked again: it would only go somewhere else first, in
     // a chain of parkings that stand in the same robot's way
-    const bool to_parking = std::any_of(tried.begin(), tried.end(), [&](const Reroute& r) {
-      return r.parking && r.parts && r.parts->first == seg.move;
-    });
-    if (to_parking || avoid.size() > kMaxParkingObstacles) return std::nullopt;
+    if (seg.to_parking || avoid.size() > kMaxParkingObstacles) return std::nullopt;
     const auto split = reroute(true, *seg.move, avoid, [&] {
       return graph.parking(*seg.move, [&](const core::ArmConfig& q) {
         const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
@@ -793,6 +791,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     ScheduleSegment second = segments[segment];
     segments[segment].move = split->first;
     segments[segment].duration = split->first->duration;
+    segments[segment].to_parking = true;
     second.move = split->second;
     second.duration = split->second->duration;
     segments.insert(segments.begin() + segment + 1, second);

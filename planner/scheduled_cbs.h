@@ -84,6 +84,9 @@ struct ScheduleSegment {
   /// moves into a transition: may arrive before it starts and wait in front of it (set by
   /// conflict resolution; by default a robot arrives just in time)
   bool early = false;
+  /// moves: a robot's way to a parking (the first part of a parked move; set by conflict
+  /// resolution, which does not park it again)
+  bool to_parking = false;
 };
 
 struct Schedule {
@@ -127,7 +130,6 @@ struct ConflictResult {
   Millis unresolved_makespan = 0;
   int nodes = 0;            ///< high-level nodes expanded
   int constraints = 0;      ///< precedences, detours and parkings in the solution
-  int reroutes = 0;         ///< detours and parkings searched for
   /// for kUnresolvable / kBudget: the last conflict found, or why no schedule could start
   /// (contradicting precedences, none shorter than makespan_below)
   std::string reason;

@@ -156,7 +156,9 @@ TEST_CASE("four robots hand twelve crossing cubes side by side, a focal weight a
           "[planner][dash]") {
   // the paper's square of four robots: every cube needs a handoff, and the robots reach into
   // the shared centre at once. One task plan, whose conflicts best first (focal weight 1)
-  // resolves in 267 nodes, Greedy's default weight in 157, within its factor of best first's
+  // resolves in 267 nodes, Greedy's default weight in 157, here within its factor of best
+  // first's makespan (the weight bounds a node against the shortest open one when it is taken,
+  // not against best first's result: a detour may make a child shorter than its parent)
   const core::LoadedWorld world = core::validateWorld(tools::generateSorting({4, 12, 4, tools::StartLayout::kCross, 2}));
   const auto run = [&](double focal_weight) {
     PlannerSettings settings;
