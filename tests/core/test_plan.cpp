@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/plan.h"
+#include "text_mutations.h"
 
 using namespace dashbed::core;
 namespace fs = std::filesystem;
@@ -552,6 +553,35 @@ TEST_CASE("limits are checked with their documented slack", "[plan]") {
   REQUIRE_THROWS_WITH(
       validate(withSpeed(1.011), "mem"),
       Catch::Matchers::StartsWith("mem: /robots/0/points/2: shoulder_pan_joint moves"));
+}
+
+TEST_CASE("edited plan files parse and validate or are refused naming the file, nothing else", "[plan]") {
+  const std::vector<std::string> odd{"",   "nan", "\"x\"", "\"\"", "-1", "0", "1e309", "-1e309", "[]", "{}", "null",
+                                     "true", "[1, 2]", "99999999999999999999", "1e-12", "-0", "{", "]", "\"r1\""};
+  std::mt19937 rng(2026);
+  std::vector<std::string> problems;
+  int accepted = 0;
+  int refused = 0;
+  for (int trial = 0; trial < 1000; ++trial) {
+    const char* name = trial % 2 == 0 ? "example.json" : "pick_place_one_robot.json";
+    std::string text = readText(kPlans / "good" / name);
+    for (auto edits = 1 + rng() % 3; edits > 0; --edits) text = dashbed::test::mutateText(text, rng, odd);
+    const std::string where = "edit_" + std::to_string(trial) + "_" + name;
+    try {
+      validate(parsePlanJson(text, where), where);
+      ++accepted;
+    } catch (const PlanError& e) {
+      ++refused;
+      if (std::string(e.what()).rfind(where + ":", 0) != 0) problems.push_back("message without the file: " + std::string(e.what()));
+    } catch (const std::exception& e) {
+      problems.push_back(where + ": " + e.what());
+    }
+  }
+  INFO("accepted " << accepted << ", refused " << refused);
+  for (const std::string& problem : problems) UNSCOPED_INFO(problem);
+  CHECK(problems.empty());
+  CHECK(refused > 500);
+  CHECK(accepted > 25);
 }
 
 TEST_CASE("unreadable files and empty text", "[plan]") {
