@@ -558,30 +558,18 @@ TEST_CASE("limits are checked with their documented slack", "[plan]") {
 TEST_CASE("edited plan files parse and validate or are refused naming the file, nothing else", "[plan]") {
   const std::vector<std::string> odd{"",   "nan", "\"x\"", "\"\"", "-1", "0", "1e309", "-1e309", "[]", "{}", "null",
                                      "true", "[1, 2]", "99999999999999999999", "1e-12", "-0", "{", "]", "\"r1\""};
-  std::mt19937 rng(2026);
-  std::vector<std::string> problems;
-  int accepted = 0;
-  int refused = 0;
-  for (int trial = 0; trial < 1000; ++trial) {
-    const char* name = trial % 2 == 0 ? "example.json" : "pick_place_one_robot.json";
-    std::string text = readText(kPlans / "good" / name);
-    for (auto edits = 1 + rng() % 3; edits > 0; --edits) text = dashbed::test::mutateText(text, rng, odd);
-    const std::string where = "edit_" + std::to_string(trial) + "_" + name;
-    try {
-      validate(parsePlanJson(text, where), where);
-      ++accepted;
-    } catch (const PlanError& e) {
-      ++refused;
-      if (std::string(e.what()).rfind(where + ":", 0) != 0) problems.push_back("message without the file: " + std::string(e.what()));
-    } catch (const std::exception& e) {
-      problems.push_back(where + ": " + e.what());
-    }
-  }
-  INFO("accepted " << accepted << ", refused " << refused);
-  for (const std::string& problem : problems) UNSCOPED_INFO(problem);
-  CHECK(problems.empty());
-  CHECK(refused > 500);
-  CHECK(accepted > 25);
+  const dashbed::test::EditedReads reads = dashbed::test::readEdited<PlanError>(
+      1000, odd,
+      [](int trial) {
+        const std::string name = trial % 2 == 0 ? "example.json" : "pick_place_one_robot.json";
+        return std::pair{readText(kPlans / "good" / name), "edit_" + std::to_string(trial) + "_" + name};
+      },
+      [](const std::string& text, const std::string& name) { validate(parsePlanJson(text, name), name); });
+  INFO("accepted " << reads.accepted << ", refused " << reads.refused);
+  for (const std::string& problem : reads.problems) UNSCOPED_INFO(problem);
+  CHECK(reads.problems.empty());
+  CHECK(reads.refused > 500);
+  CHECK(reads.accepted > 25);
 }
 
 TEST_CASE("unreadable files and empty text", "[plan]") {

@@ -624,30 +624,18 @@ TEST_CASE("edited world files load or are refused naming file, line and field, n
   const std::vector<std::filesystem::path> files{
       kWorlds / "good/minimal.yaml", kWorlds / "good/shelf.yaml", repo / "worlds/default.yaml",
       repo / "worlds/handwritten/v05_shapes.yaml", repo / "worlds/handwritten/v04_object_goals.yaml"};
-  std::mt19937 rng(2026);
-  std::vector<std::string> problems;
-  int loaded = 0;
-  int refused = 0;
-  for (int trial = 0; trial < 1000; ++trial) {
-    const std::filesystem::path& file = files[static_cast<std::size_t>(trial) % files.size()];
-    std::string text = readText(file);
-    for (auto edits = 1 + rng() % 3; edits > 0; --edits) text = dashbed::test::mutateText(text, rng, odd);
-    const std::string where = file.stem().string() + "_edit_" + std::to_string(trial) + ".yaml";
-    try {
-      validateWorld(parseWorldYaml(text, where));
-      ++loaded;
-    } catch (const WorldError& e) {
-      ++refused;
-      if (std::string(e.what()).rfind(where + ":", 0) != 0) problems.push_back("message without location: " + std::string(e.what()));
-    } catch (const std::exception& e) {
-      problems.push_back(where + ": " + e.what());
-    }
-  }
-  INFO("loaded " << loaded << ", refused " << refused);
-  for (const std::string& problem : problems) UNSCOPED_INFO(problem);
-  CHECK(problems.empty());
-  CHECK(refused > 500);
-  CHECK(loaded > 25);
+  const dashbed::test::EditedReads reads = dashbed::test::readEdited<WorldError>(
+      1000, odd,
+      [&](int trial) {
+        const std::filesystem::path& file = files[static_cast<std::size_t>(trial) % files.size()];
+        return std::pair{readText(file), file.stem().string() + "_edit_" + std::to_string(trial) + ".yaml"};
+      },
+      [](const std::string& text, const std::string& name) { validateWorld(parseWorldYaml(text, name)); });
+  INFO("loaded " << reads.accepted << ", refused " << reads.refused);
+  for (const std::string& problem : reads.problems) UNSCOPED_INFO(problem);
+  CHECK(reads.problems.empty());
+  CHECK(reads.refused > 500);
+  CHECK(reads.accepted > 25);
 }
 
 TEST_CASE("unreadable world files name the path", "[world_io]") {

@@ -5,8 +5,11 @@
 // the same way.
 
 #include <cctype>
+#include <exception>
+#include <functional>
 #include <random>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace dashbed::test {
@@ -64,6 +67,40 @@ inline std::string mutateText(const std::string& text, std::mt19937& rng, const 
   std::string out;
   for (std::size_t k = 0; k < lines.size(); ++k) out += (k == 0 ? "" : "\n") + lines[k];
   return out;
+}
+
+/// How a reader took edited files: accepted, refused with its error type and a message that
+/// starts with the file's name, or anything else (problems).
+struct EditedReads {
+  int accepted = 0;
+  int refused = 0;
+  std::vector<std::string> problems;
+};
+
+/// `trials` edited files (1-3 edits each of the text `file(trial)` gives, under the name it
+/// gives), each handed to `read(text, name)`, which throws Error on bad input.
+template <class Error>
+EditedReads readEdited(int trials, const std::vector<std::string>& odd,
+                       const std::function<std::pair<std::string, std::string>(int)>& file,
+                       const std::function<void(const std::string&, const std::string&)>& read) {
+  std::mt19937 rng(2026);
+  EditedReads reads;
+  for (int trial = 0; trial < trials; ++trial) {
+    auto [text, name] = file(trial);
+    for (auto edits = 1 + rng() % 3; edits > 0; --edits) text = mutateText(text, rng, odd);
+    try {
+      read(text, name);
+      ++reads.accepted;
+    } catch (const Error& e) {
+      ++reads.refused;
+      if (std::string(e.what()).rfind(name + ":", 0) != 0) {
+        reads.problems.push_back("message without the file's name: " + std::string(e.what()));
+      }
+    } catch (const std::exception& e) {
+      reads.problems.push_back(name + ": " + e.what());
+    }
+  }
+  return reads;
 }
 
 }  // namespace dashbed::test
