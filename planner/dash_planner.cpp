@@ -202,8 +202,8 @@ std::string describeSetAsideSites(const core::World& world, const ObjectSites& s
 /// resolution runs again without the steps' order and any schedule shorter than theirs one
 /// after another will do. Where the task plan's order (`budget`: the shortest first within
 /// its focal weight) finds none, the node free of conflicts for longest first gets a second
-/// try. Returns the overlapping schedule, or nothing when neither
-/// finds one shorter; adds the nodes expanded to `nodes` and says one line per try.
+/// try. Returns the overlapping schedule, or nothing when neither finds one shorter; adds the
+/// nodes expanded to `nodes` and says one line per try.
 std::optional<ConflictResult> overlapSequentialSteps(MotionHypergraph& graph, const TransitionHistory& history,
                                                      ConflictResolutionBudget budget,
                                                      const ConflictResult& one_after_another, int& nodes,
