@@ -298,10 +298,22 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (!(settings.conflict_focal_weight >= 1.0)) {
     throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
   }
+  if (!(settings.direct_time_share > 0.0 && settings.direct_time_share <= 1.0)) {
+    throw std::invalid_argument("planner settings: direct_time_share: must be in (0, 1]");
+  }
   PlanResult result;
   PlannerStats& stats = result.stats;
   const Clock::time_point started = Clock::now();
-  const auto time_up = [&] { return budget.deadline && Clock::now() >= *budget.deadline; };
+  // the direct queries' share of the time (see direct_time_share): their searches and conflict
+  // resolutions stop at its end, the sequential query's at the deadline
+  std::optional<Clock::time_point> direct_deadline;
+  if (budget.deadline && *budget.deadline > started) {
+    direct_deadline = started + std::chrono::duration_cast<Clock::duration>((*budget.deadline - started) *
+                                                                             settings.direct_time_share);
+  }
+  bool direct_queries = false;  // while the direct queries of a round run without a plan so far
+  const auto past = [](const std::optional<Clock::time_point>& t) { return t && Clock::now() >= *t; };
+  const auto time_up = [&] { return past(budget.deadline) || (direct_queries && past(direct_deadline)); };
   const auto say = [&](const std::string& line) {
     if (budget.progress) budget.progress(line);
   };
@@ -480,6 +492,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       return greedy;
     };
     const auto direct_plan = [&] { return best_history && !best_history->sequential; };
+    direct_queries = !best_schedule;
     for (bool again = true; again && !direct_plan() && !time_up();) {
       again = false;
       for (const QueryMode mode : {QueryMode::kDirect, QueryMode::kParkAtHome}) {
@@ -498,6 +511,10 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         if (again || direct_plan() || time_up()) break;
       }
     }
+    if (direct_queries && past(direct_deadline) && !past(budget.deadline)) {
+      say("the direct queries used their share of the time budget without a plan; on to the sequential query");
+    }
+    direct_queries = false;
     // the last resort of the round: the sequential plan, its own scheduling constraints (most
     // often a robot waiting at home in the way of another's transition) starting it again; it
     // is kept as a fallback while the next rounds look for a direct plan. Where the robots

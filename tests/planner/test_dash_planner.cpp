@@ -3,7 +3,9 @@
 // own checks), are deterministic, and infeasible worlds say why.
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <cctype>
+#include <chrono>
 #include <iomanip>
 #include <map>
 #include <sstream>
@@ -77,6 +79,33 @@ TEST_CASE("the same seed gives a byte-identical plan", "[planner][dash]") {
   CHECK_THAT(progress[1], Contains("greedy query"));
   CHECK_THAT(progress[2], Contains("found a task plan after"));
   CHECK_THAT(progress.back(), Contains("conflict resolution: makespan " + makespan.str()));
+}
+
+TEST_CASE("direct queries that use up their share of the time leave the rest to the sequential one",
+          "[planner][dash]") {
+  // the default world has a direct plan (above); with no time for the direct queries, round 1
+  // still ends with a plan, its sequential one. The deadline itself is never reached.
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  PlannerSettings settings = testSettings();
+  settings.max_rounds = 1;
+  settings.direct_time_share = 1e-9;
+  std::vector<std::string> progress;
+  PlannerBudget budget;
+  budget.deadline = std::chrono::steady_clock::now() + std::chrono::hours(1);
+  budget.progress = [&](const std::string& line) { progress.push_back(line); };
+  const PlanResult result = solve(world, settings, budget);
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  CHECK(result.stats.sequential);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  REQUIRE(progress.size() >= 2);
+  CHECK_THAT(progress[1], Contains("the direct queries used their share of the time budget"));
+  CHECK(std::none_of(progress.begin(), progress.end(),
+                     [](const std::string& line) { return line.find("greedy query, 0") == 0; }));
+
+  settings.direct_time_share = 0.0;
+  REQUIRE_THROWS_WITH(solve(world, settings), Contains("direct_time_share: must be in (0, 1]"));
 }
 
 TEST_CASE("a cube no robot can reach makes the problem infeasible and is named", "[planner][dash]") {
