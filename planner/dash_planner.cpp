@@ -512,7 +512,11 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       }
     }
     if (direct_queries && past(direct_deadline) && !past(budget.deadline)) {
-      say("the direct queries used their share of the time budget without a plan; on to the sequential query");
+      // cut short, they may leave constraints in force that no query of theirs has dropped yet
+      // (those steer a depth-first search into corners, and the sequential query has one try)
+      say("the direct queries used their share of the time budget without a plan; on to the sequential query" +
+          std::string(graph->numSchedulingConstraints() > 0 ? ", their scheduling constraints dropped" : ""));
+      graph->clearSchedulingConstraints();
     }
     direct_queries = false;
     // the last resort of the round: the sequential plan, its own scheduling constraints (most
