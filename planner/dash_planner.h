@@ -75,9 +75,10 @@ struct PlannerSettings {
   int sequential_fallback_rounds = 2;
   /// With a deadline: while there is no plan yet, the direct queries (those before a round's
   /// sequential one) stop once this share of the time from solve()'s start to the deadline is
-  /// used, leaving the rest to the sequential query, so that a world too crowded for the direct
-  /// queries to find a plan in time still gets its sequential plan (in (0, 1]; plans found
-  /// after the cut depend on the machine's speed, as any plan at the deadline does).
+  /// used, leaving the rest to the sequential query (without the scheduling constraints they
+  /// left in force), so that a world too crowded for the direct queries to find a plan in
+  /// time still gets its sequential plan (in (0, 1]; plans found after the cut depend on the
+  /// machine's speed, as any plan at the deadline does).
   double direct_time_share = 0.5;
   /// Objects standing where another object's every pick reaches over them get set-aside sites
   /// (ObjectSites::aside), so that they may be set down there for a while: needed where that
