@@ -6,11 +6,10 @@
 #include <stdexcept>
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "core/plan.h"
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
+#include "tools/cli_fwd.h"
 
 namespace dashbed::tools {
 

@@ -6,6 +6,8 @@
 #include <iostream>
 #include <stdexcept>
 
+#include <CLI/CLI.hpp>
+
 namespace dashbed::tools {
 namespace {
 

@@ -4,9 +4,8 @@
 
 #include <string>
 
-#include <CLI/CLI.hpp>
-
 #include "sim/report.h"
+#include "tools/cli_fwd.h"
 
 namespace dashbed::tools {
 

@@ -7,6 +7,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include <CLI/CLI.hpp>
+
 #include "sim/render/camera.h"
 #include "sim/render/image.h"
 #include "sim/render/overlay.h"

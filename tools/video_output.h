@@ -6,12 +6,11 @@
 #include <string>
 #include <vector>
 
-#include <CLI/CLI.hpp>
-
 #include "core/plan.h"
 #include "core/robot_set.h"
 #include "sim/render/frame_recorder.h"
 #include "sim/run_plan.h"
+#include "tools/cli_fwd.h"
 
 namespace dashbed::tools {
 

@@ -500,7 +500,7 @@ TEST_CASE("a home constraint keeps its transition out while the robot stands at 
   CHECK(graph.numSchedulingConstraints() == 0);
 }
 
-TEST_CASE("a place its robot cannot get home from counts as no place: the object is handed over", "[planner][dash]") {
+TEST_CASE("a place its robot cannot get home from counts as no place: the object is handed over", "[planner][dash][long]") {
   // r0 reaches the slots right in front of it only in poses its roadmap cannot bring home
   const core::LoadedWorld world = core::loadWorld(testWorldPath("shelf_front_slots.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);

@@ -88,7 +88,7 @@ bool piecesFree(const std::vector<ArmConfig>& path, std::span<const RestingObjec
 }  // namespace
 
 TEST_CASE("Roadmap paths end at the query nodes and every piece is free at the motion resolution",
-          "[planner][roadmap]") {
+          "[planner][roadmap][long]") {
   const core::World& world = *sortingWorld().world;
   for (const std::optional<HeldObject>& held : {std::optional<HeldObject>{}, std::optional{heldCube()}}) {
     const double finger = held ? heldFinger() : kOpen;

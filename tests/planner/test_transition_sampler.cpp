@@ -504,7 +504,7 @@ TEST_CASE("Transition sampling is deterministic", "[planner][transition]") {
   }
 }
 
-TEST_CASE("Shelf slots are filled by pushing side-grasped items in horizontally", "[planner][transition]") {
+TEST_CASE("Shelf slots are filled by pushing side-grasped items in horizontally", "[planner][transition][long]") {
   const Setup& s = world("shelf_2r_4o.yaml");
   TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);
   // every grasp some robot picks each object with

@@ -194,7 +194,7 @@ TEST_CASE("bench plan rows follow the paper's order and its table", "[bench_plan
   CHECK_THROWS_AS(benchCases(options), std::invalid_argument);
 }
 
-TEST_CASE("bench plan simulates a plan once when both methods find it", "[bench_plan]") {
+TEST_CASE("bench plan simulates a plan once when both methods find it", "[bench_plan][long]") {
   BenchOptions options;
   options.suites = {"sorting2"};
   options.objects = {2};
