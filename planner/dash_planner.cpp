@@ -16,6 +16,9 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+/// Failed direct task plans of a round resolved again (PlannerSettings::conflict_reroutes_retry).
+constexpr std::size_t kSecondTries = 3;
+
 double secondsSince(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
 /// [s] the time `work` takes, less the construction time it adds meanwhile: the search and
@@ -27,6 +30,15 @@ double secondsBeyondConstruction(const MotionHypergraph& graph, Work&& work) {
   const double built = graph.constructionSeconds();
   work();
   return secondsSince(t0) - (graph.constructionSeconds() - built);
+}
+
+/// Two task plans with the same steps (transitions, and moves to them) and final moves: a
+/// query that meets the same constraints again returns the same plan.
+bool sameTransitionsAndMoves(const TransitionHistory& a, const TransitionHistory& b) {
+  const auto same_step = [](const ScheduledTransition& x, const ScheduledTransition& y) {
+    return x.transition == y.transition && x.moves == y.moves;
+  };
+  return a.final_moves == b.final_moves && std::equal(a.steps.begin(), a.steps.end(), b.steps.begin(), b.steps.end(), same_step);
 }
 
 /// "12.34 s"
@@ -298,6 +310,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (!(settings.conflict_focal_weight >= 1.0)) {
     throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
   }
+  if (settings.conflict_reroutes < 0 || settings.conflict_reroutes_retry < 0) {
+    throw std::invalid_argument("planner settings: conflict_reroutes, conflict_reroutes_retry: must be >= 0");
+  }
   if (!(settings.direct_time_share > 0.0 && settings.direct_time_share <= 1.0)) {
     throw std::invalid_argument("planner settings: direct_time_share: must be in (0, 1]");
   }
@@ -385,6 +400,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   const SearchBudget search_budget{settings.search_expansions, time_up};
   ConflictResolutionBudget conflict_budget;
   conflict_budget.max_nodes = settings.conflict_nodes;
+  conflict_budget.max_reroutes = settings.conflict_reroutes;
   conflict_budget.stop = time_up;
   std::optional<TransitionHistory> best_history;
   std::optional<Schedule> best_schedule;
@@ -395,12 +411,17 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 
   // conflict resolution of a task plan (with this focal weight); keeps it when better than the
   // best so far. Returns true when its failure gave a new scheduling constraint (at most the
-  // round's allowance).
+  // round's allowance; none on a second try). A direct task plan that fails joins failed_direct.
   int feedbacks = 0;  // this round
-  const auto resolve = [&](const TransitionHistory& history, double focal_weight) {
+  std::vector<TransitionHistory> failed_direct;  // this round's, distinct
+  const auto resolve = [&](const TransitionHistory& history, double focal_weight, bool second_try = false) {
     ++stats.task_plans;
     ConflictResolutionBudget weighted = conflict_budget;
     weighted.focal_weight = focal_weight;
+    if (second_try) {  // with the sequential fallback in hand: only a shorter plan is worth it
+      weighted.max_reroutes = settings.conflict_reroutes_retry;
+      weighted.makespan_below = best;
+    }
     ConflictResult resolved;
     stats.conflict_seconds += secondsBeyondConstruction(*graph, [&] {
       resolved = resolveConflicts(*graph, history, weighted);
@@ -413,7 +434,12 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     });
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
-      if (feedbacks < settings.scheduling_constraints_per_round) {
+      if (!history.sequential && !second_try &&
+          std::none_of(failed_direct.begin(), failed_direct.end(),
+                       [&](const TransitionHistory& h) { return sameTransitionsAndMoves(h, history); })) {
+        failed_direct.push_back(history);
+      }
+      if (feedbacks < settings.scheduling_constraints_per_round && !second_try) {
         const auto fed_back = [&](bool added, const std::string& between) {
           if (!added) return false;
           ++feedbacks;
@@ -493,6 +519,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     };
     const auto direct_plan = [&] { return best_history && !best_history->sequential; };
     direct_queries = !best_schedule;
+    failed_direct.clear();
     for (bool again = true; again && !direct_plan() && !time_up();) {
       again = false;
       for (const QueryMode mode : {QueryMode::kDirect, QueryMode::kParkAtHome}) {
@@ -509,6 +536,19 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           break;
         }
         if (again || direct_plan() || time_up()) break;
+      }
+    }
+    // conflict resolution's second try (PlannerSettings::conflict_reroutes_retry)
+    if (best_schedule && !direct_plan() && !failed_direct.empty() &&
+        settings.conflict_reroutes_retry > settings.conflict_reroutes) {
+      std::stable_sort(failed_direct.begin(), failed_direct.end(),
+                       [](const TransitionHistory& a, const TransitionHistory& b) { return a.makespan() < b.makespan(); });
+      failed_direct.resize(std::min<std::size_t>(failed_direct.size(), kSecondTries));
+      say("conflict resolution again for the round's " + std::to_string(failed_direct.size()) + " shortest failed direct task plans, up to " +
+          std::to_string(settings.conflict_reroutes_retry) + " detours and parkings");
+      for (const TransitionHistory& history : failed_direct) {
+        if (direct_plan() || time_up()) break;
+        resolve(history, settings.conflict_focal_weight, true);
       }
     }
     if (direct_queries && past(direct_deadline) && !past(budget.deadline)) {

@@ -65,6 +65,17 @@ struct PlannerSettings {
   /// resolution of the greedy queries' task plans (Greedy's, and MM-DaSH's until it has
   /// Greedy's plan); Next-Best Search's are resolved best first (1: the shortest first).
   double conflict_focal_weight = kGreedyConflictFocalWeight;
+  /// Detours and parkings each conflict resolution may search its roadmaps for
+  /// (ConflictResolutionBudget::max_reroutes). Few: a task plan whose robots only get past each
+  /// other by many reroutes has a long schedule, and its failure feeds a scheduling constraint
+  /// back to the task search, which often finds a better plan.
+  int conflict_reroutes = 24;
+  /// In the rounds after a sequential plan was found (sequential_fallback_rounds), when none
+  /// of a round's direct task plans resolves, the three of them with the shortest optimistic
+  /// makespans are resolved again with this many reroutes, for a schedule shorter than the
+  /// sequential plan's (no constraints fed back; not above conflict_reroutes: no second try).
+  /// Not before: a plan resolved with many reroutes may be longer than the sequential one.
+  int conflict_reroutes_retry = 96;
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search
   /// Scheduling constraints fed back from failed conflict resolutions per round, each followed
   /// by a new query on the same representation.
