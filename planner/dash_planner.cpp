@@ -411,7 +411,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 
   // conflict resolution of a task plan (with this focal weight); keeps it when better than the
   // best so far. Returns true when its failure gave a new scheduling constraint (at most the
-  // round's allowance; none on a second try). A direct task plan that fails joins failed_direct.
+  // round's allowance; none on a second try). With a sequential fallback in hand, a direct task
+  // plan that fails joins failed_direct for the round's second try.
   int feedbacks = 0;  // this round
   std::vector<TransitionHistory> failed_direct;  // this round's, distinct
   const auto resolve = [&](const TransitionHistory& history, double focal_weight, bool second_try = false) {
@@ -434,7 +435,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     });
     if (resolved.status != ConflictStatus::kResolved) {
       last_failure = "conflict resolution failed: " + resolved.reason;
-      if (!history.sequential && !second_try &&
+      if (best_schedule && !history.sequential && !second_try &&
           std::none_of(failed_direct.begin(), failed_direct.end(),
                        [&](const TransitionHistory& h) { return sameTransitionsAndMoves(h, history); })) {
         failed_direct.push_back(history);
