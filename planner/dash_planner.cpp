@@ -498,15 +498,16 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // the greedy plan, and when its robots cannot be ordered, the one parking idle robots at
     // home; a new scheduling constraint starts the queries again
     std::uint64_t unconstrained_expansions = 0;  // of the last plan found without constraints
-    const auto greedy_query = [&](QueryMode mode) {
+    const auto greedy_query = [&](QueryMode mode, HyperpathSearch::Relays relays = HyperpathSearch::Relays::kOff) {
       static const char* const modes[] = {"", ", idle robots parking at home", ", one object at a time",
                                           ", one object at a time, idle robots folded"};
-      say(std::string("greedy query") + modes[static_cast<int>(mode)] + ", " +
-          std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
+      const bool relaying = relays != HyperpathSearch::Relays::kOff;
+      say(std::string("greedy query") + modes[static_cast<int>(mode)] + (relaying ? ", relaying around the robots waiting" : "") +
+          ", " + std::to_string(graph->numSchedulingConstraints()) + " scheduling constraints");
       SearchBudget query_budget = search_budget;
       query_budget.max_expansions = greedySearchExpansions(settings, mode, graph->numSchedulingConstraints() > 0, round,
                                                            unconstrained_expansions);
-      HyperpathSearch query(*graph, mode);
+      HyperpathSearch query(*graph, mode, relays);
       const SearchResult greedy = search_timed([&] { return query.greedy(query_budget); });
       if (greedy.status == SearchStatus::kFound && graph->numSchedulingConstraints() == 0) {
         unconstrained_expansions = greedy.expansions;
@@ -563,12 +564,15 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // the last resort of the round: the sequential plan, its own scheduling constraints (most
     // often a robot waiting at home in the way of another's transition) starting it again; it
     // is kept as a fallback while the next rounds look for a direct plan. Where the robots
-    // waiting at home leave it none, they wait folded back.
-    for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
-      feedbacks = 0;
-      for (bool again = !best_schedule; again && !time_up();) {
-        const SearchResult greedy = greedy_query(mode);
-        again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan, settings.conflict_focal_weight);
+    // waiting at home leave it none, they wait folded back; where that leaves none either, both
+    // run again relaying objects around the robots waiting (HyperpathSearch::Relays).
+    for (const HyperpathSearch::Relays relays : {HyperpathSearch::Relays::kOff, HyperpathSearch::Relays::kAroundIdleRobots}) {
+      for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
+        feedbacks = 0;
+        for (bool again = !best_schedule; again && !time_up();) {
+          const SearchResult greedy = greedy_query(mode, relays);
+          again = greedy.status == SearchStatus::kFound && resolve(*greedy.plan, settings.conflict_focal_weight);
+        }
       }
     }
     if (best_schedule && fallback_round == 0) fallback_round = round;

@@ -58,9 +58,10 @@ std::optional<IdlePose> aroundIdle(const TransitionHistory& history) {
 
 }  // namespace
 
-HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode)
+HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode, Relays relays)
     : graph_(&graph),
       mode_(mode),
+      relays_(isSequential(mode) ? relays : Relays::kOff),
       final_occupancy_(graph.sites().numSites()),
       placed_before_(static_cast<std::size_t>(graph.taskSpace().numObjects())) {
   for (int o = 0; o < graph.sites().numObjects(); ++o) {
@@ -291,9 +292,13 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
   const Millis after = costToGo(o, ts.holdingVertex(arc.receiver, o));
   if (after == kUnreachable) return false;
   if (after < before) return true;
-  // away from the goal only out of a hand that cannot place the object, and never back to a
-  // robot that held it before (the two would hand it back and forth)
-  if (!placeBlocked(history, arc.robot, o, history.robots[arc.robot].grasp)) return false;
+  // away from the goal only out of a hand that cannot place the object (nor, where it has no
+  // place hyperarc, hand it nearer the goal), and never back to a robot that held it before
+  // (the two would hand it back and forth)
+  if (!placeBlocked(history, arc.robot, o, history.robots[arc.robot].grasp) &&
+      !nearerHandoffsBlocked(history, arc.robot, o, history.robots[arc.robot].grasp)) {
+    return false;
+  }
   return std::none_of(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
     const TransitionSample& sample = graph_->transition(step.transition).sample;
     return sample.object == o && sample.holderAfter() == arc.receiver;
@@ -334,6 +339,28 @@ bool HyperpathSearch::placeBlocked(const TransitionHistory& history, int robot, 
   return std::all_of(ids.begin(), ids.end(), [&](int id) {
     return graph_->transition(id).sample.touches.intersects(filled) || knownUnusable(id) || blockedByIdleRobots(id);
   });
+}
+
+bool HyperpathSearch::nearerHandoffsBlocked(const TransitionHistory& history, int robot, int object, int grasp) const {
+  const TaskSpaceHypergraph& ts = graph_->taskSpace();
+  if (relays_ == Relays::kOff || place_hyperarc_[static_cast<std::size_t>(robot * ts.numObjects() + object)] >= 0) {
+    return false;
+  }
+  const Millis before = costToGo(object, ts.holdingVertex(robot, object));
+  const SiteSet filled = history.filledGoals(graph_->sites().numSites());
+  for (std::size_t h = 0; h < ts.numHyperarcs(); ++h) {
+    const TransitionHyperarc& arc = ts.hyperarcs()[h];
+    if (arc.kind != TransitionKind::kHandoff || arc.robot != robot || arc.object != object) continue;
+    const Millis after = costToGo(object, ts.holdingVertex(arc.receiver, object));
+    if (after == kUnreachable || after >= before) continue;
+    const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
+    if (std::any_of(ids.begin(), ids.end(), [&](int id) {
+          return !graph_->transition(id).sample.touches.intersects(filled) && !blockedByIdleRobots(id);
+        })) {
+      return false;
+    }
+  }
+  return true;
 }
 
 bool HyperpathSearch::blockedByIdleRobots(int transition) const {

@@ -297,3 +297,50 @@ TEST_CASE("with idle robots folded, a sequential plan folds first, waits folded 
     }
   }
 }
+
+TEST_CASE("with relays, a sequential task plan hands an object through the robot standing between giver and placer",
+          "[planner][dash]") {
+  // robots a, b, c in a row; a alone reaches blue_0 and c alone its bin (red_0 the other way
+  // round). Handoffs straight from a to c run over b waiting at home, and by the fastest
+  // handoffs b holding the cube is no nearer the goal than a: without relays, no plan
+  Graph g(testWorldPath("row_3r_relay.yaml"));
+  CHECK(HyperpathSearch(g.graph, QueryMode::kSequential).greedy({}).status == SearchStatus::kExhausted);
+  const SearchResult found =
+      HyperpathSearch(g.graph, QueryMode::kSequential, HyperpathSearch::Relays::kAroundIdleRobots).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const TransitionHistory& history = *found.plan;
+  // the world as described: in the grasp each end robot picked its cube in, every handoff
+  // straight to the other end runs into b at home
+  int end_to_end = 0;
+  for (const ScheduledTransition& step : history.steps) {
+    const MotionTransition& pick = g.graph.transition(step.transition);
+    if (pick.sample.kind != TransitionKind::kPick) continue;
+    const int giver = pick.sample.motions.front().robot;
+    const int grasp = g.graph.vertex(pick.head.front()).grasp;
+    for (std::size_t h = 0; h < g.task_space.numHyperarcs(); ++h) {
+      const TransitionHyperarc& arc = g.task_space.hyperarcs()[h];
+      if (arc.kind != TransitionKind::kHandoff || arc.object != pick.sample.object || arc.robot != giver ||
+          arc.receiver != 2 - giver) {
+        continue;
+      }
+      for (const int id : g.graph.transitionsOf(static_cast<int>(h), grasp)) {
+        ++end_to_end;
+        CHECK_FALSE(g.graph.clearOfIdle(id, 1, IdlePose::kHome));
+      }
+    }
+  }
+  CHECK(end_to_end > 0);
+  // both cubes pass through b's hand, and no step runs into a robot waiting at home
+  CollisionChecker checker(g.graph.scene());
+  int received_by_b = 0;
+  for (const ScheduledTransition& step : history.steps) {
+    const TransitionSample& sample = g.graph.transition(step.transition).sample;
+    if (sample.kind == TransitionKind::kHandoff && sample.holderAfter() == 1) ++received_by_b;
+    const std::vector<int> busy = robotsOf(g.graph, step);
+    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
+      INFO("transition " << step.transition << ", robot " << idle << " at home");
+      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
+    }
+  }
+  CHECK(received_by_b == 2);
+}
