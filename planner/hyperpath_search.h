@@ -176,9 +176,10 @@ class HyperpathSearch {
   /// demand) that is not known to be unusable and keeps clear of the goal sites the history
   /// has filled (objects stay at their goals).
   bool placeBlocked(const TransitionHistory& history, int robot, int object, int grasp) const;
-  /// With Relays::kAroundIdleRobots, in a sequential mode: `robot` has no place hyperarc for `object`, and no sample
-  /// (sampled on demand) of its handoffs of it in `grasp` to a robot nearer the goal (by the cost
-  /// to go) keeps clear of the goal sites the history has filled and of the robots standing idle.
+  /// With Relays::kAroundIdleRobots, in a sequential mode: `robot` has no place hyperarc for
+  /// `object`, and no sample (sampled on demand) of its handoffs of it in `grasp` to a robot
+  /// nearer the goal (by the cost to go) keeps clear of the goal sites the history has filled
+  /// and of the robots standing idle.
   /// With three robots in a row, an end robot's handoffs straight to the other end pass over the
   /// middle one waiting at home; the middle robot, by the fastest handoffs, is no nearer the
   /// goal, but relaying the object through it is the way on.
