@@ -298,7 +298,7 @@ std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int r
 
 std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode mode, bool constrained, int round,
                                      std::uint64_t unconstrained) {
-  if (!constrained && !isSequential(mode)) return settings.search_expansions;
+  if (!constrained && !keepsClearOfIdle(mode)) return settings.search_expansions;
   return constrainedSearchExpansions(settings, round, unconstrained);
 }
 
@@ -499,7 +499,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     // home; a new scheduling constraint starts the queries again
     std::uint64_t unconstrained_expansions = 0;  // of the last plan found without constraints
     const auto greedy_query = [&](QueryMode mode, HyperpathSearch::Relays relays = HyperpathSearch::Relays::kOff) {
-      static const char* const modes[] = {"", ", idle robots parking at home", ", one object at a time",
+      static const char* const modes[] = {"", ", idle robots parking at home",
+                                          ", idle robots parking at home out of every transition's way",
+                                          ", one object at a time",
                                           ", one object at a time, idle robots folded"};
       const bool relaying = relays != HyperpathSearch::Relays::kOff;
       say(std::string("greedy query") + modes[static_cast<int>(mode)] + (relaying ? ", relaying around the robots waiting" : "") +
@@ -539,6 +541,14 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
         }
         if (again || direct_plan() || time_up()) break;
       }
+    }
+    // where they leave no direct plan, once a round: the robots parking at home out of every
+    // transition's way, objects relayed around them (its conflicts feed no constraint back: the
+    // round's queries are done with them)
+    if (!direct_plan() && !time_up()) {
+      const SearchResult greedy = greedy_query(QueryMode::kParkClearOfHomes, HyperpathSearch::Relays::kAroundIdleRobots);
+      feedbacks = settings.scheduling_constraints_per_round;
+      if (greedy.status == SearchStatus::kFound) resolve(*greedy.plan, settings.conflict_focal_weight);
     }
     // conflict resolution's second try (PlannerSettings::conflict_reroutes_retry)
     if (best_schedule && !direct_plan() && !failed_direct.empty() &&

@@ -51,12 +51,13 @@ struct PlannerSettings {
   std::uint64_t seed = 1;
   int max_rounds = 30;                        ///< representation expansions before giving up
   std::uint64_t search_expansions = 20000;    ///< per hyperpath query
-  /// per greedy query while scheduling constraints are in force, and per sequential query, in
-  /// round 1, doubling every round up to search_expansions (or twice what the last query
-  /// without constraints took, when more): a depth-first search they (or the robots waiting at
-  /// home of a sequential plan) steer into a corner backtracks long, and the next round may do
-  /// without them; but a round that drops them meets the same conflicts again, so each round
-  /// lets the constrained search look further
+  /// per greedy query while scheduling constraints are in force, and per query keeping clear
+  /// of the robots waiting at home (sequential, QueryMode::kParkClearOfHomes), in round 1,
+  /// doubling every round up to search_expansions (or twice what the last query without
+  /// constraints took, when more): a depth-first search they (or the robots waiting) steer into
+  /// a corner backtracks long, and the next round may do without them; but a round that drops
+  /// them meets the same conflicts again, so each round lets the constrained search look
+  /// further
   std::uint64_t constrained_search_expansions = 1000;
   /// per conflict resolution (a sequential plan gets up to three: its steps one after
   /// another, then overlapping in the task plan's order and depth first along time)
@@ -144,7 +145,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int round, std::uint64_t unconstrained);
 
 /// Expansion budget of a greedy query in `mode` in round `round`: search_expansions, but
-/// constrainedSearchExpansions for a sequential query and for any query while scheduling
+/// constrainedSearchExpansions for a query keeping clear of the robots standing idle (the
+/// sequential ones, kParkClearOfHomes: keepsClearOfIdle) and for any query while scheduling
 /// constraints are in force (`constrained`).
 std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode mode, bool constrained, int round,
                                      std::uint64_t unconstrained);

@@ -50,18 +50,12 @@ int placeSite(const TransitionHyperarc& arc) {
   return arc.rest_pose == RestPose::kAside ? ObjectSites::asideSite(arc.object) : ObjectSites::goalSite(arc.object);
 }
 
-/// The robots a move of `history` keeps clear of, standing idle: in a sequential history, every
-/// other robot (MotionHypergraph::move's around_idle).
-std::optional<IdlePose> aroundIdle(const TransitionHistory& history) {
-  return history.sequential ? std::optional(history.idle) : std::nullopt;
-}
-
 }  // namespace
 
 HyperpathSearch::HyperpathSearch(MotionHypergraph& graph, QueryMode mode, Relays relays)
     : graph_(&graph),
       mode_(mode),
-      relays_(isSequential(mode) ? relays : Relays::kOff),
+      relays_(keepsClearOfIdle(mode) ? relays : Relays::kOff),
       final_occupancy_(graph.sites().numSites()),
       placed_before_(static_cast<std::size_t>(graph.taskSpace().numObjects())) {
   for (int o = 0; o < graph.sites().numObjects(); ++o) {
@@ -306,7 +300,7 @@ bool HyperpathSearch::handoffAllowed(const TransitionHistory& history, const Tra
 }
 
 bool HyperpathSearch::restReachable(int robot, const core::ArmConfig& q) {
-  const std::optional<IdlePose> around = isSequential(mode_) ? std::optional(idlePose()) : std::nullopt;
+  const std::optional<IdlePose> around = aroundIdle();
   const core::ArmConfig& rest = graph_->idleConfiguration(robot, around.value_or(IdlePose::kHome));
   return q == rest || graph_->move(robot, -1, -1, q, rest, final_occupancy_, around) != nullptr;
 }
@@ -363,8 +357,12 @@ bool HyperpathSearch::nearerHandoffsBlocked(const TransitionHistory& history, in
   return true;
 }
 
+std::optional<IdlePose> HyperpathSearch::aroundIdle() const {
+  return isSequential(mode_) ? std::optional(idlePose()) : std::nullopt;
+}
+
 bool HyperpathSearch::blockedByIdleRobots(int transition) const {
-  if (!isSequential(mode_)) return false;
+  if (!keepsClearOfIdle(mode_)) return false;
   const std::vector<TransitionMotion>& motions = graph_->transition(transition).sample.motions;
   for (int r = 0; r < graph_->scene().numRobots(); ++r) {
     const bool idle = std::none_of(motions.begin(), motions.end(), [&](const TransitionMotion& m) { return m.robot == r; });
@@ -440,7 +438,7 @@ std::optional<TransitionHistory> HyperpathSearch::apply(const TransitionHistory&
       for (const TransitionHistory::RobotState& other : history.robots) t = std::max(t, other.free);
     }
     for (std::size_t k = 1; k < stops.size(); ++k) {
-      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied, aroundIdle(history));
+      const Move* move = graph_->move(motion.robot, r.object, r.grasp, stops[k - 1], stops[k], occupied, aroundIdle());
       if (move == nullptr) return std::nullopt;
       t = after_left(move->touches, t);
       mark_busy(move->touches, t + move->duration);
@@ -497,7 +495,7 @@ std::optional<TransitionHistory> HyperpathSearch::finish(const TransitionHistory
     const TransitionHistory::RobotState& state = history.robots[r];
     // home, or folded first while the others still finish, then home with all of them
     const core::ArmConfig& rest = graph_->idleConfiguration(robot, folded ? IdlePose::kFolded : IdlePose::kHome);
-    const Move* move = state.q == rest ? nullptr : graph_->move(robot, -1, -1, state.q, rest, occupied, aroundIdle(history));
+    const Move* move = state.q == rest ? nullptr : graph_->move(robot, -1, -1, state.q, rest, occupied, aroundIdle());
     if (state.q != rest && move == nullptr) return std::nullopt;
     done.final_moves.push_back(move);
     done.final_starts.push_back(state.free);

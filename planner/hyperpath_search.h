@@ -88,6 +88,11 @@ struct SearchResult {
 enum class QueryMode {
   kDirect,      ///< every robot goes straight from one transition to the next
   kParkAtHome,  ///< a robot without an object goes home between transitions, to wait out of the way
+  /// kParkAtHome with every transition keeping clear of the robots it does not need standing at
+  /// home: a robot waiting there holds up no transition (conflict resolution orders the moves
+  /// past it), so robots crowding each other's workspaces still work at once; a row of robots
+  /// relays objects through the ones in between (Relays)
+  kParkClearOfHomes,
   /// the steps run one after another (TransitionHistory::sequential): only the robots of one
   /// step move at any time, the others wait at home (holding their object, if any); a second
   /// object is picked up only when no other choice is left (conflict resolution may then let
@@ -104,13 +109,18 @@ inline bool isSequential(QueryMode mode) {
   return mode == QueryMode::kSequential || mode == QueryMode::kSequentialFolded;
 }
 
+/// The transitions of a plan in this mode keep clear of the robots standing idle (in the
+/// sequential modes, the moves too: HyperpathSearch::aroundIdle).
+inline bool keepsClearOfIdle(QueryMode mode) { return mode == QueryMode::kParkClearOfHomes || isSequential(mode); }
+
 class HyperpathSearch {
  public:
-  /// Relays (sequential modes only, see nearerHandoffsBlocked): an object may be handed to a
-  /// robot no nearer its goal out of a hand whose every handoff nearer the goal runs into the
-  /// robots standing idle. Off by default, as a fallback: where a sequential query finds plans
-  /// without, they tend to be shorter (another robot picks the object instead; in 5- and
-  /// 6-robot rings relays from the start lengthened 3 of 5 sequential plans, by up to 16 %).
+  /// Relays (only in the modes keeping clear of idle robots, see nearerHandoffsBlocked): an
+  /// object may be handed to a robot no nearer its goal out of a hand whose every handoff
+  /// nearer the goal runs into the robots standing idle. Off by default, as a fallback: where a
+  /// sequential query finds plans without, they tend to be shorter (another robot picks the
+  /// object instead; in 5- and 6-robot rings relays from the start lengthened 3 of 5
+  /// sequential plans, by up to 16 %).
   enum class Relays { kOff, kAroundIdleRobots };
   /// `graph` is extended on demand (transitions sampled, moves planned) and must outlive the
   /// search.
@@ -145,11 +155,15 @@ class HyperpathSearch {
   /// A scheduling constraint keeps `transition` out of the history: the history holds a
   /// transition paired with it, or a robot it must wait for still stands at home.
   bool excluded(const TransitionHistory& history, int transition) const;
-  /// In this query's sequential modes: the motions of `transition` run into a robot it does not
-  /// need, standing idle as it does while the transition runs (MotionHypergraph::clearOfIdle).
+  /// In this query's modes keeping clear of idle robots (keepsClearOfIdle): the motions of
+  /// `transition` run into a robot it does not need, standing idle as it does while the
+  /// transition runs (MotionHypergraph::clearOfIdle).
   bool blockedByIdleRobots(int transition) const;
-  /// Where this query's robots wait between their steps (kParkAtHome, the sequential modes).
+  /// Where this query's robots wait between their steps (the parking and sequential modes).
   IdlePose idlePose() const;
+  /// The robots this query's moves keep clear of, standing idle (keepsClearOfIdle), or none
+  /// (MotionHypergraph::move's around_idle).
+  std::optional<IdlePose> aroundIdle() const;
   bool deadlocked(const TransitionHistory& history) const;
   /// The handoff hyperarc `arc` may take the object from its giver: towards the goal (by the
   /// cost to go), or away from it (or no nearer) out of a hand that cannot place it
@@ -176,10 +190,10 @@ class HyperpathSearch {
   /// demand) that is not known to be unusable and keeps clear of the goal sites the history
   /// has filled (objects stay at their goals).
   bool placeBlocked(const TransitionHistory& history, int robot, int object, int grasp) const;
-  /// With Relays::kAroundIdleRobots, in a sequential mode: `robot` has no place hyperarc for
-  /// `object`, and no sample (sampled on demand) of its handoffs of it in `grasp` to a robot
-  /// nearer the goal (by the cost to go) keeps clear of the goal sites the history has filled
-  /// and of the robots standing idle.
+  /// With Relays::kAroundIdleRobots (in the modes keeping clear of idle robots): `robot` has no
+  /// place hyperarc for `object`, and no sample (sampled on demand) of its handoffs of it in
+  /// `grasp` to a robot nearer the goal (by the cost to go) keeps clear of the goal sites the
+  /// history has filled and of the robots standing idle.
   /// With three robots in a row, an end robot's handoffs straight to the other end pass over the
   /// middle one waiting at home; the middle robot, by the fastest handoffs, is no nearer the
   /// goal, but relaying the object through it is the way on.

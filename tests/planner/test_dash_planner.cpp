@@ -540,7 +540,7 @@ TEST_CASE("a constrained greedy query may look twice as far every round, up to t
   CHECK(constrainedSearchExpansions(settings, 1, 15000) == 20000);
 }
 
-TEST_CASE("a sequential greedy query looks as far as a constrained one", "[planner][dash]") {
+TEST_CASE("a greedy query keeping clear of the robots at home looks as far as a constrained one", "[planner][dash]") {
   PlannerSettings settings;
   settings.constrained_search_expansions = 1000;
   settings.search_expansions = 20000;
@@ -548,7 +548,7 @@ TEST_CASE("a sequential greedy query looks as far as a constrained one", "[plann
     CHECK(greedySearchExpansions(settings, mode, false, 1, 30) == 20000);
     CHECK(greedySearchExpansions(settings, mode, true, 1, 30) == 1000);
   }
-  for (const QueryMode mode : {QueryMode::kSequential, QueryMode::kSequentialFolded}) {
+  for (const QueryMode mode : {QueryMode::kParkClearOfHomes, QueryMode::kSequential, QueryMode::kSequentialFolded}) {
     CHECK(greedySearchExpansions(settings, mode, false, 1, 30) == 1000);
     CHECK(greedySearchExpansions(settings, mode, false, 3, 30) == 4000);
     CHECK(greedySearchExpansions(settings, mode, true, 2, 3000) == 6000);

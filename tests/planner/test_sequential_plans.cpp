@@ -1,6 +1,8 @@
 // The sequential greedy query (QueryMode::kSequential), the planner's last resort when conflict
 // resolution cannot order the robots of the other plans: its steps run one after another, the
-// robots of other steps wait at home, and conflict resolution keeps that order.
+// robots of other steps wait at home, and conflict resolution keeps that order. Also the direct
+// query whose transitions keep clear of the robots at home as the sequential ones do
+// (QueryMode::kParkClearOfHomes).
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -343,4 +345,49 @@ TEST_CASE("with relays, a sequential task plan hands an object through the robot
     }
   }
   CHECK(received_by_b == 2);
+}
+
+TEST_CASE("idle robots parking at home out of every transition's way: the robots work at once, relaying through the "
+          "middle one, and conflict resolution orders them",
+          "[planner][dash]") {
+  // the row of three again (previous test): a direct plan whose transitions all keep clear of
+  // the robots at home, so that conflict resolution can hold any robot without an object there
+  Graph g(testWorldPath("row_3r_relay_own_cubes.yaml"));
+  const SearchResult found =
+      HyperpathSearch(g.graph, QueryMode::kParkClearOfHomes, HyperpathSearch::Relays::kAroundIdleRobots).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const TransitionHistory& history = *found.plan;
+  CHECK_FALSE(history.sequential);
+  CollisionChecker checker(g.graph.scene());
+  int received_by_b = 0;
+  bool overlapping = false;  // two steps of different robots run at once
+  for (std::size_t k = 0; k < history.steps.size(); ++k) {
+    const ScheduledTransition& step = history.steps[k];
+    const TransitionSample& sample = g.graph.transition(step.transition).sample;
+    if (sample.kind == TransitionKind::kHandoff && sample.holderAfter() == 1) ++received_by_b;
+    const std::vector<int> busy = robotsOf(g.graph, step);
+    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
+      INFO("transition " << step.transition << ", robot " << idle << " at home");
+      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
+    }
+    for (std::size_t j = 0; j < k; ++j) {
+      const ScheduledTransition& before = history.steps[j];
+      const std::vector<int> others = robotsOf(g.graph, before);
+      const bool shared = std::any_of(busy.begin(), busy.end(),
+                                      [&](int r) { return std::find(others.begin(), others.end(), r) != others.end(); });
+      const Millis before_end = before.start + g.graph.transition(before.transition).sample.duration;
+      overlapping = overlapping || (!shared && step.start < before_end && before.start < step.start + sample.duration);
+    }
+  }
+  CHECK(received_by_b == 2);
+  CHECK(overlapping);
+  const ConflictResult resolved = resolveConflicts(g.graph, history, conflictBudget());
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  // shorter than the sequential query's plan with its steps one after another
+  const SearchResult sequential =
+      HyperpathSearch(g.graph, QueryMode::kSequential, HyperpathSearch::Relays::kAroundIdleRobots).greedy({});
+  REQUIRE(sequential.status == SearchStatus::kFound);
+  const ConflictResult one_after_another = resolveConflicts(g.graph, *sequential.plan, conflictBudget());
+  REQUIRE(one_after_another.status == ConflictStatus::kResolved);
+  CHECK(resolved.schedule->makespan < one_after_another.schedule->makespan);
 }
