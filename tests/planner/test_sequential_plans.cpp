@@ -72,6 +72,26 @@ bool hitsHome(Graph& g, CollisionChecker& checker, int id, int idle) {
   return false;
 }
 
+/// Checks that no step of `history` runs into a robot it does not need standing at home.
+void checkStepsClearOfHomes(Graph& g, const TransitionHistory& history) {
+  CollisionChecker checker(g.graph.scene());
+  for (const ScheduledTransition& step : history.steps) {
+    const std::vector<int> busy = robotsOf(g.graph, step);
+    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
+      INFO("transition " << step.transition << ", robot " << idle << " at home");
+      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
+    }
+  }
+}
+
+/// The handoffs of `history` that `robot` receives an object in.
+int handoffsTo(const MotionHypergraph& graph, const TransitionHistory& history, int robot) {
+  return static_cast<int>(std::count_if(history.steps.begin(), history.steps.end(), [&](const ScheduledTransition& step) {
+    const TransitionSample& sample = graph.transition(step.transition).sample;
+    return sample.kind == TransitionKind::kHandoff && sample.holderAfter() == robot;
+  }));
+}
+
 }  // namespace
 
 TEST_CASE("a sequential task plan waits at home between steps and picks one object at a time when it can",
@@ -212,14 +232,7 @@ TEST_CASE("a sequential task plan keeps every step clear of the robots waiting a
   const TransitionHistory& history = *found.plan;
   REQUIRE_FALSE(history.steps.empty());
   CHECK(g.graph.transition(history.steps.front().transition).sample.motions.front().robot == 0);
-  CollisionChecker checker(g.graph.scene());
-  for (const ScheduledTransition& step : history.steps) {
-    const std::vector<int> busy = robotsOf(g.graph, step);
-    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
-      INFO("transition " << step.transition << ", r" << idle << " at home");
-      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
-    }
-  }
+  checkStepsClearOfHomes(g, history);
 }
 
 TEST_CASE("a robot folds back over its base unless it would hit something, then it waits at home",
@@ -333,18 +346,8 @@ TEST_CASE("with relays, a sequential task plan hands an object through the robot
   }
   CHECK(end_to_end > 0);
   // both cubes pass through b's hand, and no step runs into a robot waiting at home
-  CollisionChecker checker(g.graph.scene());
-  int received_by_b = 0;
-  for (const ScheduledTransition& step : history.steps) {
-    const TransitionSample& sample = g.graph.transition(step.transition).sample;
-    if (sample.kind == TransitionKind::kHandoff && sample.holderAfter() == 1) ++received_by_b;
-    const std::vector<int> busy = robotsOf(g.graph, step);
-    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
-      INFO("transition " << step.transition << ", robot " << idle << " at home");
-      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
-    }
-  }
-  CHECK(received_by_b == 2);
+  CHECK(handoffsTo(g.graph, history, 1) == 2);
+  checkStepsClearOfHomes(g, history);
 }
 
 TEST_CASE("idle robots parking at home out of every transition's way: the robots work at once, relaying through the "
@@ -358,18 +361,13 @@ TEST_CASE("idle robots parking at home out of every transition's way: the robots
   REQUIRE(found.status == SearchStatus::kFound);
   const TransitionHistory& history = *found.plan;
   CHECK_FALSE(history.sequential);
-  CollisionChecker checker(g.graph.scene());
-  int received_by_b = 0;
+  CHECK(handoffsTo(g.graph, history, 1) == 2);
+  checkStepsClearOfHomes(g, history);
   bool overlapping = false;  // two steps of different robots run at once
   for (std::size_t k = 0; k < history.steps.size(); ++k) {
     const ScheduledTransition& step = history.steps[k];
     const TransitionSample& sample = g.graph.transition(step.transition).sample;
-    if (sample.kind == TransitionKind::kHandoff && sample.holderAfter() == 1) ++received_by_b;
     const std::vector<int> busy = robotsOf(g.graph, step);
-    for (int idle = 0; idle < g.graph.scene().numRobots(); ++idle) {
-      INFO("transition " << step.transition << ", robot " << idle << " at home");
-      if (std::find(busy.begin(), busy.end(), idle) == busy.end()) CHECK_FALSE(hitsHome(g, checker, step.transition, idle));
-    }
     for (std::size_t j = 0; j < k; ++j) {
       const ScheduledTransition& before = history.steps[j];
       const std::vector<int> others = robotsOf(g.graph, before);
@@ -379,7 +377,6 @@ TEST_CASE("idle robots parking at home out of every transition's way: the robots
       overlapping = overlapping || (!shared && step.start < before_end && before.start < step.start + sample.duration);
     }
   }
-  CHECK(received_by_b == 2);
   CHECK(overlapping);
   const ConflictResult resolved = resolveConflicts(g.graph, history, conflictBudget());
   REQUIRE(resolved.status == ConflictStatus::kResolved);
