@@ -10,8 +10,8 @@
 //
 //  Method::kGreedy   Greedy-MM-DaSH: one greedy hyperpath query per round; the first plan whose
 //                    conflicts resolve is returned (earlyTermination from the start), unless
-//                    it is sequential: then the direct queries go on for
-//                    sequential_fallback_rounds more rounds.
+//                    it is a fallback (sequential, or parked out of every transition's way):
+//                    then the direct queries go on for sequential_fallback_rounds more rounds.
 //  Method::kOptimal  MM-DaSH: Greedy's rounds until they have a plan, then Next-Best Search
 //                    (Alg. 5) with the A*-like hyperpath query on that round's representation,
 //                    starting from the greedy plan as the upper bound (so it is never worse),
@@ -82,8 +82,9 @@ struct PlannerSettings {
   /// by a new query on the same representation.
   int scheduling_constraints_per_round = 6;
   /// A plan moving one object at a time (the last resort of a round whose other queries all
-  /// failed) is kept as a fallback: the direct queries go on for this many more rounds of
-  /// expansion, and a plan they find replaces it when shorter.
+  /// failed), or one with the robots parked at home out of every transition's way
+  /// (QueryMode::kParkClearOfHomes), is kept as a fallback: the direct queries go on for this
+  /// many more rounds of expansion, and a plan they find replaces it when shorter.
   int sequential_fallback_rounds = 2;
   /// With a deadline: while there is no plan yet, the direct queries (those before a round's
   /// sequential one) stop once this share of the time from solve()'s start to the deadline is

@@ -258,3 +258,29 @@ TEST_CASE("a round's failed direct task plans resolved again with more reroutes 
   CHECK_FALSE(second_try.stats.sequential);
   CHECK(second_try.stats.makespan < first_try.stats.makespan);
 }
+
+TEST_CASE("a plan with the robots parked out of every transition's way is a fallback: the direct queries go on",
+          "[planner][dash]") {
+  // the row of three with a cube of its own at each end: no direct task plan of round 1
+  // resolves, the one keeping clear of the robots at home does; like a sequential plan it is
+  // kept while the direct queries of sequential_fallback_rounds more rounds look for a shorter
+  // one, and the sequential query never runs
+  const core::LoadedWorld world = core::loadWorld(testWorldPath("row_3r_relay_own_cubes.yaml"));
+  const PlannerSettings settings;
+  std::vector<std::string> progress;
+  PlannerBudget budget;
+  budget.progress = [&](const std::string& line) { progress.push_back(line); };
+  const PlanResult result = solve(world, settings, budget);
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  CHECK_FALSE(result.stats.sequential);
+  CHECK(result.stats.rounds == 1 + settings.sequential_fallback_rounds);
+  const auto said = [&](const std::string& text) {
+    return std::any_of(progress.begin(), progress.end(),
+                       [&](const std::string& line) { return line.find(text) != std::string::npos; });
+  };
+  CHECK(said("keeping the plan with the robots parked out of every transition's way"));
+  CHECK_FALSE(said("one object at a time"));
+}
