@@ -330,9 +330,7 @@ bool HyperpathSearch::placeBlocked(const TransitionHistory& history, int robot, 
   if (place < 0) return false;
   const SiteSet filled = history.filledGoals(graph_->sites().numSites());
   const std::vector<int>& ids = graph_->transitionsOf(place, grasp);
-  return std::all_of(ids.begin(), ids.end(), [&](int id) {
-    return graph_->transition(id).sample.touches.intersects(filled) || knownUnusable(id) || blockedByIdleRobots(id);
-  });
+  return std::none_of(ids.begin(), ids.end(), [&](int id) { return stillUsable(id, filled); });
 }
 
 bool HyperpathSearch::nearerHandoffsBlocked(const TransitionHistory& history, int robot, int object, int grasp) const {
@@ -348,13 +346,14 @@ bool HyperpathSearch::nearerHandoffsBlocked(const TransitionHistory& history, in
     const Millis after = costToGo(object, ts.holdingVertex(arc.receiver, object));
     if (after == kUnreachable || after >= before) continue;
     const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
-    if (std::any_of(ids.begin(), ids.end(), [&](int id) {
-          return !graph_->transition(id).sample.touches.intersects(filled) && !blockedByIdleRobots(id);
-        })) {
-      return false;
-    }
+    if (std::any_of(ids.begin(), ids.end(), [&](int id) { return stillUsable(id, filled); })) return false;
   }
   return true;
+}
+
+bool HyperpathSearch::stillUsable(int transition, const SiteSet& filled) const {
+  return !graph_->transition(transition).sample.touches.intersects(filled) && !knownUnusable(transition) &&
+         !blockedByIdleRobots(transition);
 }
 
 std::optional<IdlePose> HyperpathSearch::aroundIdle() const {
@@ -521,11 +520,7 @@ bool HyperpathSearch::deadlocked(const TransitionHistory& history) const {
   const SiteSet placed = history.filledGoals(graph_->sites().numSites());
   const auto available = [&](std::size_t h, int grasp) {
     const std::vector<int>& ids = graph_->transitionsOf(static_cast<int>(h), grasp);
-    return std::any_of(ids.begin(), ids.end(),
-                       [&](int id) {
-                         return !graph_->transition(id).sample.touches.intersects(placed) && !knownUnusable(id) &&
-                                !blockedByIdleRobots(id);
-                       });
+    return std::any_of(ids.begin(), ids.end(), [&](int id) { return stillUsable(id, placed); });
   };
   std::vector<bool> progresses(n, false);
   for (bool changed = true; changed;) {

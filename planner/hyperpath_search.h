@@ -184,6 +184,10 @@ class HyperpathSearch {
   /// placeBlocked run on every child, and their queries would spend the roadmaps' growth of the
   /// round on places the search may never try.
   bool knownUnusable(int transition) const;
+  /// A sample a history with the goal sites `filled` may still take: it keeps clear of them, is
+  /// not known to be unusable (knownUnusable; only places can be) and does not run into the
+  /// robots standing idle (blockedByIdleRobots). Asks no roadmap.
+  bool stillUsable(int transition, const SiteSet& filled) const;
   /// This round's entry of `transition` in usable_ (the cache is cleared when a round begins).
   signed char& usableEntry(int transition) const;
   /// `robot` has a place hyperarc for `object` but no sample of it for `grasp` (sampled on
