@@ -81,7 +81,12 @@ render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
   }
   drawAxes(image, area, plot.x_label, plot.y_label, plot.title);
 
-  // the series, then the legend
+  // the series, then the rings of lone dashed points, then the legend
+  struct Ring {
+    double x, y, radius;
+    core::Color color;
+  };
+  std::vector<Ring> rings;
   for (const PlotSeries& s : plot.series) {
     std::vector<std::pair<double, double>> points;
     std::copy_if(s.points.begin(), s.points.end(), std::back_inserter(points),
@@ -94,9 +99,18 @@ render::Image drawLinePlot(const LinePlot& plot, int width, int height) {
     if (!s.dashed) {
       for (const auto& [x, y] : points) fillCircle(image, px(x), py(y), 4.5, s.color);
     } else if (points.size() == 1) {  // no line to dash: a ring marks the lone point
-      fillCircle(image, px(points[0].first), py(points[0].second), 5.5, s.color);
-      fillCircle(image, px(points[0].first), py(points[0].second), 3.0, {1.0, 1.0, 1.0});
+      Ring ring{px(points[0].first), py(points[0].second), 5.5, s.color};
+      // rings on the same spot (e.g. two of the paper's rows at about the same time) nest
+      for (const Ring& r : rings) {
+        if (std::abs(r.x - ring.x) <= 6.0 && std::abs(r.y - ring.y) <= 6.0) ring.radius = std::max(ring.radius, r.radius + 3.0);
+      }
+      rings.push_back(ring);
     }
+  }
+  std::stable_sort(rings.begin(), rings.end(), [](const Ring& a, const Ring& b) { return a.radius > b.radius; });
+  for (const Ring& r : rings) {  // largest first, so that an inner ring's white centre leaves the outer band
+    fillCircle(image, r.x, r.y, r.radius, r.color);
+    fillCircle(image, r.x, r.y, r.radius - 2.5, {1.0, 1.0, 1.0});
   }
   const int legend_x = x_hi + 20;
   for (std::size_t i = 0; i < plot.series.size(); ++i) {

@@ -16,7 +16,8 @@ namespace dashbed::tools {
 struct PlotSeries {
   std::string label;  ///< legend entry (ASCII)
   core::Color color;
-  bool dashed = false;  ///< dashed line without markers (e.g. reference data); a lone point gets a ring
+  bool dashed = false;  ///< dashed line without markers (e.g. reference data); a lone point gets a ring,
+                        ///< nested with the rings of other lone points on the same spot
   std::vector<std::pair<double, double>> points;  ///< (x, y), joined in increasing x
 };
 

@@ -236,6 +236,26 @@ TEST_CASE("a plot marks a dashed series of a single point, which has no line to 
   CHECK(red > 20);
 }
 
+TEST_CASE("two dashed single points on the same spot both stay visible, as nested rings", "[bench_plan]") {
+  LinePlot plot;
+  plot.log_y = true;
+  plot.series.push_back({"ours", {0.0, 0.0, 1.0}, false, {{16, 30.0}}});
+  plot.series.push_back({"paper cross", {1.0, 0.0, 0.0}, true, {{16, 4005.0}}});
+  plot.series.push_back({"paper random", {0.0, 1.0, 0.0}, true, {{16, 3990.0}}});
+  const render::Image image = drawLinePlot(plot, 800, 400);
+  int red = 0;
+  int green = 0;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width - 360; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      red += p[0] > 200 && p[1] < 60 && p[2] < 60 ? 1 : 0;
+      green += p[1] > 200 && p[0] < 60 && p[2] < 60 ? 1 : 0;
+    }
+  }
+  CHECK(red > 20);
+  CHECK(green > 20);
+}
+
 TEST_CASE("a plot of a single object count draws it in the middle, not at the right edge", "[bench_plan]") {
   LinePlot plot;
   plot.log_y = true;
