@@ -414,17 +414,19 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
 
   // conflict resolution of a task plan (with this focal weight); keeps it when better than the
   // best so far. Returns true when its failure gave a new scheduling constraint (at most the
-  // round's allowance; none on a second try). With a sequential fallback in hand, a direct task
-  // plan that fails joins failed_direct for the round's second try.
+  // round's allowance; none on a second try). With a fallback plan in hand, a direct task plan
+  // that fails joins failed_direct for the round's second try, which resolves in `order`.
   int feedbacks = 0;  // this round
   std::vector<TransitionHistory> failed_direct;  // this round's, distinct
-  const auto resolve = [&](const TransitionHistory& history, double focal_weight, bool second_try = false) {
+  const auto resolve = [&](const TransitionHistory& history, double focal_weight, bool second_try = false,
+                           NodeOrder order = NodeOrder::kMakespan) {
     ++stats.task_plans;
     ConflictResolutionBudget weighted = conflict_budget;
     weighted.focal_weight = focal_weight;
-    if (second_try) {  // with the sequential fallback in hand: only a shorter plan is worth it
+    if (second_try) {  // with the fallback in hand: only a shorter plan is worth it
       weighted.max_reroutes = settings.conflict_reroutes_retry;
       weighted.makespan_below = best;
+      weighted.order = order;
     }
     ConflictResult resolved;
     stats.conflict_seconds += secondsBeyondConstruction(*graph, [&] {
@@ -565,10 +567,15 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
                        [](const TransitionHistory& a, const TransitionHistory& b) { return a.makespan() < b.makespan(); });
       failed_direct.resize(std::min<std::size_t>(failed_direct.size(), kSecondTries));
       say("conflict resolution again for the round's " + std::to_string(failed_direct.size()) + " shortest failed direct task plans, up to " +
-          std::to_string(settings.conflict_reroutes_retry) + " detours and parkings");
+          std::to_string(settings.conflict_reroutes_retry) + " detours and parkings, best first, then depth first along time");
+      // any schedule shorter than the fallback's will do: where best first runs out of nodes
+      // (robots meeting again and again, each meeting ordered both ways), depth first along time
+      // most often finds one in a few dozen (NodeOrder::kAlongTime)
       for (const TransitionHistory& history : failed_direct) {
-        if (direct_plan() || time_up()) break;
-        resolve(history, settings.conflict_focal_weight, true);
+        for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime}) {
+          if (direct_plan() || time_up()) break;
+          resolve(history, settings.conflict_focal_weight, true, order);
+        }
       }
     }
     if (direct_queries && past(direct_deadline) && !past(budget.deadline)) {

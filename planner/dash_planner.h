@@ -74,7 +74,8 @@ struct PlannerSettings {
   /// In the rounds after a sequential plan was found (sequential_fallback_rounds), when none
   /// of a round's direct task plans resolves, the three of them with the shortest optimistic
   /// makespans are resolved again with this many reroutes, for a schedule shorter than the
-  /// sequential plan's (no constraints fed back; not above conflict_reroutes: no second try).
+  /// sequential plan's (no constraints fed back; not above conflict_reroutes: no second try):
+  /// each best first and, where that fails, depth first along time (NodeOrder::kAlongTime).
   /// Not before: a plan resolved with many reroutes may be longer than the sequential one.
   int conflict_reroutes_retry = 96;
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search

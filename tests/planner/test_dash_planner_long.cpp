@@ -284,3 +284,36 @@ TEST_CASE("a plan with the robots parked out of every transition's way is a fall
   CHECK(said("keeping the plan with the robots parked out of every transition's way"));
   CHECK_FALSE(said("one object at a time"));
 }
+
+TEST_CASE("a second try that runs out of nodes best first resolves depth first along time, below the sequential plan",
+          "[planner][dash]") {
+  // two robots 0.6 m apart sorting 10 cubes: no direct task plan resolves on the first try and
+  // round 1 falls back to one object at a time. On a later round's second try, best first runs
+  // out of its nodes ordering the robots' many meetings both ways; depth first along time, which
+  // takes any schedule shorter than the fallback's, finds one
+  const core::LoadedWorld world = core::loadWorld(worldPath("handwritten/v15_close_10c.yaml"));
+  std::vector<std::string> progress;
+  PlannerBudget budget;
+  budget.progress = [&](const std::string& line) { progress.push_back(line); };
+  const PlanResult result = solve(world, PlannerSettings{}, budget);
+  INFO(result.reason);
+  REQUIRE(result.status == PlannerStatus::kSolved);
+  requireValidActions(*result.plan, *world.world);
+  requireNoRobotCollision(*result.plan, world);
+  CHECK_FALSE(result.stats.sequential);
+  const auto line_with = [&](const std::string& text, std::size_t from = 0) {
+    return std::find_if(progress.begin() + static_cast<std::ptrdiff_t>(from), progress.end(),
+                        [&](const std::string& line) { return line.find(text) != std::string::npos; });
+  };
+  const std::string kept = "keeping the sequential plan (makespan ";
+  const auto fallback = line_with(kept);
+  REQUIRE(fallback != progress.end());
+  CHECK(result.stats.makespan < std::stod(fallback->substr(fallback->find(kept) + kept.size())));
+  // the plan comes from a second try, after a failure there
+  const auto again = line_with("conflict resolution again");
+  REQUIRE(again != progress.end());
+  const auto resolved = line_with("conflict resolution: makespan", static_cast<std::size_t>(again - progress.begin()));
+  REQUIRE(resolved != progress.end());
+  REQUIRE(resolved - again >= 2);
+  CHECK((resolved - 1)->find("conflict resolution failed") != std::string::npos);
+}
