@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <catch2/catch.hpp>
+#include <numeric>
 #include <optional>
 #include <sstream>
 #include <stdexcept>
@@ -219,21 +220,26 @@ TEST_CASE("bench plan simulates a plan once when both methods find it", "[bench_
   CHECK(rows[0].runs[1].makespan == rows[1].runs[1].makespan);
 }
 
+/// The columns of the pixels left of a plot's legend (its right 360 px) in a pure colour: channel
+/// `c` (0 red, 1 green, 2 blue) above 200, the other two below 60; one entry per pixel.
+std::vector<int> pureColourColumns(const render::Image& image, int c) {
+  std::vector<int> columns;
+  for (int y = 0; y < image.height; ++y) {
+    for (int x = 0; x < image.width - 360; ++x) {
+      const std::uint8_t* p = image.pixel(x, y);
+      if (p[c] > 200 && p[(c + 1) % 3] < 60 && p[(c + 2) % 3] < 60) columns.push_back(x);
+    }
+  }
+  return columns;
+}
+
 TEST_CASE("a plot marks a dashed series of a single point, which has no line to dash", "[bench_plan]") {
   LinePlot plot;
   plot.log_y = true;
   plot.series.push_back({"ours", {0.0, 0.0, 1.0}, false, {{4, 0.5}, {8, 2.0}}});
   plot.series.push_back({"paper, one row", {1.0, 0.0, 0.0}, true, {{4, 40.0}}});
-  const render::Image image = drawLinePlot(plot, 800, 400);
-  // red pixels left of the legend (the right 360 px): only the marker can make them
-  int red = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width - 360; ++x) {
-      const std::uint8_t* p = image.pixel(x, y);
-      red += p[0] > 200 && p[1] < 60 && p[2] < 60 ? 1 : 0;
-    }
-  }
-  CHECK(red > 20);
+  // red pixels left of the legend: only the marker can make them
+  CHECK(pureColourColumns(drawLinePlot(plot, 800, 400), 0).size() > 20);
 }
 
 TEST_CASE("two dashed single points on the same spot both stay visible, as nested rings", "[bench_plan]") {
@@ -243,39 +249,20 @@ TEST_CASE("two dashed single points on the same spot both stay visible, as neste
   plot.series.push_back({"paper cross", {1.0, 0.0, 0.0}, true, {{16, 4005.0}}});
   plot.series.push_back({"paper random", {0.0, 1.0, 0.0}, true, {{16, 3990.0}}});
   const render::Image image = drawLinePlot(plot, 800, 400);
-  int red = 0;
-  int green = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width - 360; ++x) {
-      const std::uint8_t* p = image.pixel(x, y);
-      red += p[0] > 200 && p[1] < 60 && p[2] < 60 ? 1 : 0;
-      green += p[1] > 200 && p[0] < 60 && p[2] < 60 ? 1 : 0;
-    }
-  }
-  CHECK(red > 20);
-  CHECK(green > 20);
+  CHECK(pureColourColumns(image, 0).size() > 20);
+  CHECK(pureColourColumns(image, 1).size() > 20);
 }
 
 TEST_CASE("a plot of a single object count draws it in the middle, not at the right edge", "[bench_plan]") {
   LinePlot plot;
   plot.log_y = true;
   plot.series.push_back({"ours", {0.0, 0.0, 1.0}, false, {{16, 30.0}}});
-  const render::Image image = drawLinePlot(plot, 800, 400);
   // the blue marker's pixels, left of the legend: the plot area runs from x = 100 to 440
-  double sum = 0.0;
-  int blue = 0;
-  for (int y = 0; y < image.height; ++y) {
-    for (int x = 0; x < image.width - 360; ++x) {
-      const std::uint8_t* p = image.pixel(x, y);
-      if (p[2] > 200 && p[0] < 60 && p[1] < 60) {
-        sum += x;
-        ++blue;
-      }
-    }
-  }
-  REQUIRE(blue > 20);
-  CHECK(sum / blue > 180.0);
-  CHECK(sum / blue < 360.0);
+  const std::vector<int> blue = pureColourColumns(drawLinePlot(plot, 800, 400), 2);
+  REQUIRE(blue.size() > 20);
+  const double mean_x = std::accumulate(blue.begin(), blue.end(), 0.0) / static_cast<double>(blue.size());
+  CHECK(mean_x > 180.0);
+  CHECK(mean_x < 360.0);
 }
 
 }  // namespace
