@@ -71,10 +71,10 @@ struct PlannerSettings {
   /// other by many reroutes has a long schedule, and its failure feeds a scheduling constraint
   /// back to the task search, which often finds a better plan.
   int conflict_reroutes = 24;
-  /// In the rounds after a sequential plan was found (sequential_fallback_rounds), when none
+  /// In the rounds after a fallback plan was found (sequential_fallback_rounds), when none
   /// of a round's direct task plans resolves, the three of them with the shortest optimistic
   /// makespans are resolved again with this many reroutes, for a schedule shorter than the
-  /// sequential plan's (no constraints fed back; not above conflict_reroutes: no second try):
+  /// fallback's (no constraints fed back; not above conflict_reroutes: no second try):
   /// each best first and, where that fails, depth first along time (NodeOrder::kAlongTime).
   /// Not before: a plan resolved with many reroutes may be longer than the sequential one.
   int conflict_reroutes_retry = 96;
