@@ -325,12 +325,19 @@ std::optional<std::pair<const Move*, const Move*>> MotionHypergraph::parking(
   std::sort(candidates.begin(), candidates.end());
   if (candidates.size() > static_cast<std::size_t>(attempts)) candidates.resize(static_cast<std::size_t>(attempts));
   for (const auto& [time, id] : candidates) {
-    const core::ArmConfig q = map.node(id);  // a copy: move() may add nodes
-    const Move* there = move(original.robot, original.object, original.grasp, from, q, original.occupied);
-    const Move* back = there ? move(original.robot, original.object, original.grasp, q, to, original.occupied) : nullptr;
-    if (back) return std::pair{there, back};
+    if (auto split = parkingAt(original, map.node(id))) return split;
   }
   return std::nullopt;
+}
+
+std::optional<std::pair<const Move*, const Move*>> MotionHypergraph::parkingAt(const Move& original,
+                                                                               core::ArmConfig q) {
+  if (q == original.path.front() || q == original.path.back()) return std::nullopt;
+  const Move* there = move(original.robot, original.object, original.grasp, original.path.front(), q, original.occupied);
+  const Move* back =
+      there ? move(original.robot, original.object, original.grasp, q, original.path.back(), original.occupied) : nullptr;
+  if (!back) return std::nullopt;
+  return std::pair{there, back};
 }
 
 bool MotionHypergraph::addSchedulingConstraint(int transition_a, int transition_b) {

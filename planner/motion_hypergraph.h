@@ -158,6 +158,10 @@ class MotionHypergraph {
   std::optional<std::pair<const Move*, const Move*>> parking(const Move& original,
                                                              const std::function<bool(const core::ArmConfig&)>& clear,
                                                              int attempts = 5);
+  /// `original` split at the parking configuration `q` (taken by value: move() may add roadmap
+  /// nodes), both parts as move() plans them; std::nullopt when q is one of its ends or either
+  /// part has no path.
+  std::optional<std::pair<const Move*, const Move*>> parkingAt(const Move& original, core::ArmConfig q);
 
   /// Scheduling constraints (paper: Transition-extended Hypergraph > Scheduling Constraints):
   /// pairs of transition hyperarcs whose robots conflict resolution could not order around each

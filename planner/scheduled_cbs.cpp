@@ -772,20 +772,28 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     return make(std::move(segments), node.extra, std::move(detours), node.parkings);
   };
   // the child where the robot, instead of standing where move `segment` starts, goes early to a
-  // configuration clear of `avoid` and waits there: the move split in two at that parking
-  const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid) -> std::optional<Node> {
+  // configuration clear of `avoid` and waits there: the move split in two at that parking. A
+  // parking is the nearest roadmap node clear of `avoid` or, with `fold` (a robot alone), its
+  // folded configuration, further off but out of the shared workspace, where the next robot
+  // coming through does not meet it either. Folding is two moves move() caches, not a roadmap
+  // search for `avoid`: it is not counted against max_reroutes.
+  const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid,
+                          bool fold) -> std::optional<Node> {
     const ScheduleSegment& seg = node.schedule.segments[segment];
     // a robot's way to a parking is not parked again: it would only go somewhere else first, in
     // a chain of parkings that stand in the same robot's way
-    if (seg.to_parking || avoid.size() > kMaxParkingObstacles) return std::nullopt;
-    const auto split = reroute(true, *seg.move, avoid, [&] {
-      return graph.parking(*seg.move, [&](const core::ArmConfig& q) {
-        const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
-        return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
-          return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
-        });
+    if (seg.to_parking || avoid.size() > kMaxParkingObstacles || (fold && seg.held)) return std::nullopt;
+    const auto clear = [&](const core::ArmConfig& q) {
+      const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
+      return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
+        return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
       });
-    });
+    };
+    const core::ArmConfig& folded = graph.idleConfiguration(seg.robot, IdlePose::kFolded);
+    const std::optional<MoveParts> split =
+        !fold ? reroute(true, *seg.move, avoid, [&] { return graph.parking(*seg.move, clear); })
+        : clear(folded) ? graph.parkingAt(*seg.move, folded)
+                        : std::nullopt;
     if (!split) return std::nullopt;
     std::vector<ScheduleSegment> segments = node.schedule.segments;
     ScheduleSegment second = segments[segment];
@@ -919,8 +927,9 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
           if (node.schedule.start[before] + segments[before].duration >= node.schedule.start[segment]) continue;
         }
         const int busy = view.timeline(other).segments[other_item];
-        if (std::optional<Node> child = parked(node, segment, obstaclesDuring(view, node.schedule, busy, other))) {
-          push(std::move(*child));
+        const std::vector<Obstacle> avoid = obstaclesDuring(view, node.schedule, busy, other);
+        for (const bool fold : {false, true}) {
+          if (std::optional<Node> child = parked(node, segment, avoid, fold)) push(std::move(*child));
         }
       }
     }

@@ -1,7 +1,7 @@
 // The DaSH planner's longer runs (label "long"): the shelving search with its scheduling
 // constraints, shelving end to end, three robots in a hand-written layout, six robots in rows,
-// five in a ring, four in the paper's square, the sequential search on a crowded ring, and
-// MM-DaSH against greedy.
+// five in a ring, four in the paper's square and at the table's corners (a robot folding out of
+// the others' way), the sequential search on a crowded ring, and MM-DaSH against greedy.
 // Iteration caps, no wall-clock budgets.
 #include <catch2/catch.hpp>
 
@@ -14,6 +14,7 @@
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
 #include "planner/hyperpath_search.h"
+#include "planner/scheduled_cbs.h"
 #include "tools/scenarios.h"
 #include "tests/planner/dash_test_support.h"
 #include "tests/planner/plan_checks.h"
@@ -316,4 +317,47 @@ TEST_CASE("a second try that runs out of nodes best first resolves depth first a
   REQUIRE(resolved != progress.end());
   REQUIRE(resolved - again >= 2);
   CHECK((resolved - 1)->find("conflict resolution failed") != std::string::npos);
+}
+
+TEST_CASE("a robot standing in the others' way folds back over its base to wait where no nearer parking helps",
+          "[planner][dash]") {
+  // four robots at the table's corners: seed 1's first greedy task plan resolves only with a
+  // robot folded back over its base while the others pass (without folding: no schedule in
+  // 500 nodes)
+  const core::LoadedWorld world = core::loadWorld(worldPath("handwritten/u05_corners_4r.yaml"));
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  MotionHypergraph graph(world, task_space, 1);
+  const SearchResult found = HyperpathSearch(graph).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  REQUIRE_FALSE(found.plan->sequential);
+  ConflictResolutionBudget budget;  // the planner's first try
+  budget.max_nodes = 500;
+  budget.focal_weight = kGreedyConflictFocalWeight;
+  budget.max_reroutes = 24;
+  const ConflictResult resolved = resolveConflicts(graph, *found.plan, budget);
+  INFO(resolved.reason);
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const Schedule& schedule = *resolved.schedule;
+  CHECK_FALSE(firstConflict(graph, schedule).has_value());
+
+  int folds = 0;
+  for (std::size_t s = 0; s + 1 < schedule.segments.size(); ++s) {
+    const ScheduleSegment& there = schedule.segments[s];
+    const core::ArmConfig& folded = graph.idleConfiguration(there.robot, IdlePose::kFolded);
+    if (there.move == nullptr || !there.to_parking || there.move->path.back() != folded) continue;
+    ++folds;
+    INFO("robot " << there.robot << " folds in segment " << s);
+    CHECK(folded != world.world->robots[static_cast<std::size_t>(there.robot)].home);
+    CHECK_FALSE(there.held.has_value());
+    // it goes on from there with the move it was parked before, and stands folded in between
+    const ScheduleSegment& on = schedule.segments[s + 1];
+    REQUIRE(on.robot == there.robot);
+    REQUIRE(on.move != nullptr);
+    CHECK(on.move->path.front() == folded);
+    const Millis arrived = schedule.start[s] + there.duration;
+    REQUIRE(schedule.start[s + 1] >= arrived);
+    const double waiting = toSeconds(arrived + (schedule.start[s + 1] - arrived) / 2);
+    CHECK(scheduledArm(graph, schedule, there.robot, waiting) == folded);
+  }
+  CHECK(folds >= 1);
 }
