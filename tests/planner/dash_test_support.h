@@ -1,6 +1,8 @@
 #pragma once
-// What the DaSH planner tests share: world paths and planner settings with iteration caps.
+// What the DaSH planner tests share: world paths, a world with its hypergraphs, and planner
+// settings with iteration caps.
 
+#include <cstdint>
 #include <string>
 
 #include "planner/dash_planner.h"
@@ -12,6 +14,17 @@ inline std::string worldPath(const std::string& name) { return std::string(DASHB
 inline std::string testWorldPath(const std::string& name) {
   return std::string(DASHBED_SOURCE_ROOT) + "/tests/planner/worlds/" + name;
 }
+
+/// A world with its task-space and motion hypergraphs.
+struct WorldGraph {
+  core::LoadedWorld world;
+  TaskSpaceHypergraph task_space;
+  MotionHypergraph graph;
+  explicit WorldGraph(const std::string& path, std::uint64_t seed = 7)
+      : world(core::loadWorld(path)),
+        task_space(TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach)),
+        graph(world, task_space, seed) {}
+};
 
 inline PlannerSettings testSettings(Method method = Method::kGreedy) {
   PlannerSettings settings;

@@ -324,9 +324,8 @@ TEST_CASE("a robot standing in the others' way folds back over its base to wait 
   // four robots at the table's corners: seed 1's first greedy task plan resolves only with a
   // robot folded back over its base while the others pass (without folding: no schedule in
   // 500 nodes)
-  const core::LoadedWorld world = core::loadWorld(worldPath("handwritten/u05_corners_4r.yaml"));
-  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
-  MotionHypergraph graph(world, task_space, 1);
+  WorldGraph g(worldPath("handwritten/u05_corners_4r.yaml"), 1);
+  MotionHypergraph& graph = g.graph;
   const SearchResult found = HyperpathSearch(graph).greedy({});
   REQUIRE(found.status == SearchStatus::kFound);
   REQUIRE_FALSE(found.plan->sequential);
@@ -347,7 +346,7 @@ TEST_CASE("a robot standing in the others' way folds back over its base to wait 
     if (there.move == nullptr || !there.to_parking || there.move->path.back() != folded) continue;
     ++folds;
     INFO("robot " << there.robot << " folds in segment " << s);
-    CHECK(folded != world.world->robots[static_cast<std::size_t>(there.robot)].home);
+    CHECK(folded != g.world.world->robots[static_cast<std::size_t>(there.robot)].home);
     CHECK_FALSE(there.held.has_value());
     // it goes on from there with the move it was parked before, and stands folded in between
     const ScheduleSegment& on = schedule.segments[s + 1];

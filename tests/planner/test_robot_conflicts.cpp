@@ -99,9 +99,8 @@ TEST_CASE("a robot whose move ends at the instant of a conflict stands after it,
 
 TEST_CASE("conflict resolution checks the robots where the written plan's interpolation takes them",
           "[planner][dash]") {
-  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
-  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
-  MotionHypergraph graph(world, task_space, 7);
+  WorldGraph g(worldPath("default.yaml"));
+  MotionHypergraph& graph = g.graph;
   const SearchResult found = HyperpathSearch(graph).greedy({});
   REQUIRE(found.status == SearchStatus::kFound);
   ConflictResolutionBudget budget;
@@ -110,7 +109,7 @@ TEST_CASE("conflict resolution checks the robots where the written plan's interp
   REQUIRE(resolved.status == ConflictStatus::kResolved);
   const Schedule& schedule = *resolved.schedule;
   const core::Plan plan = writePlan(graph, *found.plan, schedule);
-  REQUIRE(plan.trajectories.size() == world.world->robots.size());
+  REQUIRE(plan.trajectories.size() == g.world.world->robots.size());
 
   // Along a transition the simulator follows the cubic through the keys, as conflict resolution
   // does; a move is written as samples every 50 ms with their velocities, whose cubics stay

@@ -23,16 +23,6 @@ using namespace dashbed::planner::testing;
 
 namespace {
 
-struct Graph {
-  core::LoadedWorld world;
-  TaskSpaceHypergraph task_space;
-  MotionHypergraph graph;
-  explicit Graph(const std::string& path)
-      : world(core::loadWorld(path)),
-        task_space(TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach)),
-        graph(world, task_space, 7) {}
-};
-
 /// The robots taking part in a history step.
 std::vector<int> robotsOf(const MotionHypergraph& graph, const ScheduledTransition& step) {
   std::vector<int> robots;
@@ -47,7 +37,7 @@ ConflictResolutionBudget conflictBudget() {
 }
 
 /// The graph's sequential greedy task plan and its schedule from conflict resolution.
-std::pair<TransitionHistory, Schedule> resolvedSequential(Graph& g) {
+std::pair<TransitionHistory, Schedule> resolvedSequential(WorldGraph& g) {
   const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
   REQUIRE(found.status == SearchStatus::kFound);
   const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, conflictBudget());
@@ -57,7 +47,7 @@ std::pair<TransitionHistory, Schedule> resolvedSequential(Graph& g) {
 
 /// Whether transition `id` runs into `idle` standing at home with its gripper open, checked
 /// on 50 configurations per straight piece of every motion.
-bool hitsHome(Graph& g, CollisionChecker& checker, int id, int idle) {
+bool hitsHome(WorldGraph& g, CollisionChecker& checker, int id, int idle) {
   const Eigen::VectorXd home = homeConfiguration(*g.world.world, g.graph.scene(), idle);
   for (const TransitionMotion& m : g.graph.transition(id).sample.motions) {
     for (std::size_t i = 0; i + 1 < m.keys.size(); ++i) {
@@ -73,7 +63,7 @@ bool hitsHome(Graph& g, CollisionChecker& checker, int id, int idle) {
 }
 
 /// Checks that no step of `history` runs into a robot it does not need standing at home.
-void checkStepsClearOfHomes(Graph& g, const TransitionHistory& history) {
+void checkStepsClearOfHomes(WorldGraph& g, const TransitionHistory& history) {
   CollisionChecker checker(g.graph.scene());
   for (const ScheduledTransition& step : history.steps) {
     const std::vector<int> busy = robotsOf(g.graph, step);
@@ -96,7 +86,7 @@ int handoffsTo(const MotionHypergraph& graph, const TransitionHistory& history, 
 
 TEST_CASE("a sequential task plan waits at home between steps and picks one object at a time when it can",
           "[planner][dash]") {
-  Graph g(worldPath("default.yaml"));
+  WorldGraph g(worldPath("default.yaml"));
   const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
   REQUIRE(found.status == SearchStatus::kFound);
   const TransitionHistory& history = *found.plan;
@@ -126,7 +116,7 @@ TEST_CASE("a sequential task plan waits at home between steps and picks one obje
 }
 
 TEST_CASE("conflict resolution keeps the steps of a sequential task plan one after another", "[planner][dash]") {
-  Graph g(worldPath("default.yaml"));
+  WorldGraph g(worldPath("default.yaml"));
   const auto [history, schedule] = resolvedSequential(g);
   CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
   // every segment of a later phase starts once every segment of an earlier one has ended
@@ -149,7 +139,7 @@ TEST_CASE("conflict resolution keeps the steps of a sequential task plan one aft
 
 TEST_CASE("conflict resolution may overlap the steps of a sequential task plan, robots waiting at home between theirs",
           "[planner][dash]") {
-  Graph g(worldPath("default.yaml"));
+  WorldGraph g(worldPath("default.yaml"));
   const auto [history, one_after_another] = resolvedSequential(g);
   ConflictResolutionBudget budget = conflictBudget();
   budget.makespan_below = one_after_another.makespan;
@@ -194,7 +184,7 @@ TEST_CASE("conflict resolution may overlap the steps of a sequential task plan, 
 TEST_CASE("a plan kept as a fallback is written out the same after the representation grows", "[planner][dash]") {
   // the planner keeps a sequential plan while later rounds look for a direct one: its moves
   // must outlive the rounds that plan every move again
-  Graph g(worldPath("default.yaml"));
+  WorldGraph g(worldPath("default.yaml"));
   const auto [history, schedule] = resolvedSequential(g);
   const std::string before = core::writePlanJson(writePlan(g.graph, history, schedule));
   const std::size_t moves = g.graph.numMoves();
@@ -206,7 +196,7 @@ TEST_CASE("a plan kept as a fallback is written out the same after the represent
 
 TEST_CASE("a transition is clear of a robot at home unless its motions run into it", "[planner][dash]") {
   // the cube lies right under r0's gripper at home: r1's picks run into it
-  Graph g(testWorldPath("idle_home_block.yaml"));
+  WorldGraph g(testWorldPath("idle_home_block.yaml"));
   CollisionChecker checker(g.graph.scene());
   int blocked = 0, clear = 0;
   for (std::size_t h = 0; h < g.task_space.numHyperarcs(); ++h) {
@@ -226,7 +216,7 @@ TEST_CASE("a transition is clear of a robot at home unless its motions run into 
 
 TEST_CASE("a sequential task plan keeps every step clear of the robots waiting at home", "[planner][dash]") {
   // only r1 reaches the bin, and its picks run into r0 at home: r0 picks and hands over
-  Graph g(testWorldPath("idle_home_block.yaml"));
+  WorldGraph g(testWorldPath("idle_home_block.yaml"));
   const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
   REQUIRE(found.status == SearchStatus::kFound);
   const TransitionHistory& history = *found.plan;
@@ -237,7 +227,7 @@ TEST_CASE("a sequential task plan keeps every step clear of the robots waiting a
 
 TEST_CASE("a robot folds back over its base unless it would hit something, then it waits at home",
           "[planner][dash]") {
-  Graph g(testWorldPath("idle_home_fold.yaml"));
+  WorldGraph g(testWorldPath("idle_home_fold.yaml"));
   const core::World& world = *g.world.world;
   const std::vector<core::ArmConfig> folded = foldedConfigurations(world, g.graph.scene());
   REQUIRE(folded.size() == 2);
@@ -265,7 +255,7 @@ TEST_CASE("a robot folds back over its base unless it would hit something, then 
 TEST_CASE("with idle robots folded, a sequential plan folds first, waits folded and unfolds last",
           "[planner][dash]") {
   // the 38 mm cube cannot be handed over, only r1 places it, and r1's picks run into r0 at home
-  Graph g(testWorldPath("idle_home_fold.yaml"));
+  WorldGraph g(testWorldPath("idle_home_fold.yaml"));
   const SearchResult at_home = HyperpathSearch(g.graph, QueryMode::kSequential).greedy({});
   CHECK(at_home.status == SearchStatus::kExhausted);
   const SearchResult found = HyperpathSearch(g.graph, QueryMode::kSequentialFolded).greedy({});
@@ -318,7 +308,7 @@ TEST_CASE("with relays, a sequential task plan hands an object through the robot
   // robots a, b, c in a row; a alone reaches blue_0 and c alone its bin (red_0 the other way
   // round). Handoffs straight from a to c run over b waiting at home, and by the fastest
   // handoffs b holding the cube is no nearer the goal than a: without relays, no plan
-  Graph g(testWorldPath("row_3r_relay.yaml"));
+  WorldGraph g(testWorldPath("row_3r_relay.yaml"));
   CHECK(HyperpathSearch(g.graph, QueryMode::kSequential).greedy({}).status == SearchStatus::kExhausted);
   const SearchResult found =
       HyperpathSearch(g.graph, QueryMode::kSequential, HyperpathSearch::Relays::kAroundIdleRobots).greedy({});
@@ -355,7 +345,7 @@ TEST_CASE("idle robots parking at home out of every transition's way: the robots
           "[planner][dash]") {
   // the row of three again (previous test): a direct plan whose transitions all keep clear of
   // the robots at home, so that conflict resolution can hold any robot without an object there
-  Graph g(testWorldPath("row_3r_relay_own_cubes.yaml"));
+  WorldGraph g(testWorldPath("row_3r_relay_own_cubes.yaml"));
   const SearchResult found =
       HyperpathSearch(g.graph, QueryMode::kParkClearOfHomes, HyperpathSearch::Relays::kAroundIdleRobots).greedy({});
   REQUIRE(found.status == SearchStatus::kFound);
