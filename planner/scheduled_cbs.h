@@ -51,7 +51,10 @@
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
 //    configuration clear of the other's item and waits there; the move is split in two. The
-//    way to a parking is not parked again (a chain of parkings stays in the other's way).
+//    way to a parking is not parked again (a chain of parkings stays in the other's way). A
+//    robot with empty hands also gets a second child where it folds back over its base to
+//    wait (MotionHypergraph::idleConfiguration, IdlePose::kFolded), out of the shared
+//    workspace, where the next robot coming through does not meet it either.
 // A child repeats its parent's schedule up to their first difference, so the check starts at
 // the earlier of that and the parent's conflict. Conflicts that no order resolves are reported
 // back (ConflictResult::unordered) for the task search to avoid.
