@@ -43,6 +43,15 @@ bool CollisionChecker::robotFree(int robot, const Eigen::VectorXd& q, std::span<
   return !state_->robotCollision(slot, objects);
 }
 
+bool CollisionChecker::heldObjectFree(int robot, int object, const core::Pose& X_WO) {
+  const detail::SceneData& scene = *scene_->data_;
+  requireRobot(scene, robot);
+  requireHeld(scene, HeldObject{object});
+  const detail::ObjectData& data = scene.objects[object];
+  const detail::Frame X_W(X_WO);
+  return state_->heldStaticBox(robot, {ShapeType::kBox, data.box_grown.get(), &X_W, &data.half_grown, data.radius_grown}) < 0;
+}
+
 std::string CollisionChecker::robotContact(int robot, const Eigen::VectorXd& q) {
   const detail::SceneData& scene = *scene_->data_;
   const RobotData& data = requireRobot(scene, robot);

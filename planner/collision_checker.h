@@ -230,6 +230,12 @@ class CollisionChecker {
   bool robotFree(int robot, const Eigen::VectorXd& q, std::span<const RestingObject> objects,
                  const std::optional<HeldObject>& held = std::nullopt);
 
+  /// A held object alone at X_WO against the static scene, as robotFree checks it for `robot`
+  /// holding it (HeldObject::check_static; the robot's own static boxes are not checked): true
+  /// when free. No forward kinematics: a cheap first test of where an object would be carried
+  /// before any arm configuration is solved for.
+  bool heldObjectFree(int robot, int object, const core::Pose& X_WO);
+
   /// The axis-aligned box (min, max corners) around every body's bounding sphere of `robot`
   /// at q, and the held object's: robotsFree finds two robots free, without further tests,
   /// whenever their boxes are apart.

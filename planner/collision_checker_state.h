@@ -328,15 +328,22 @@ struct CheckerState {
       if (hit) return Hit{b, box};
     }
     if (slot.holding && slot.held_static) {
-      const Placed held = placedHeld(slot);
-      const bool hit = forStaticNear(slot.X_WH.p, held.radius, [&](int k) {
-        if (statics.owner[k] == self || !shapesCollide(held, placedStatic(k))) return false;
-        box = k;
-        return true;
-      });
-      if (hit) return Hit{kHeldBody, box};
+      box = heldStaticBox(self, placedHeld(slot));
+      if (box >= 0) return Hit{kHeldBody, box};
     }
     return std::nullopt;
+  }
+
+  /// The first static box (not one of robot `self`'s own) the held object `held` hits, or -1.
+  int heldStaticBox(int self, const Placed& held) {
+    const StaticData& statics = scene->statics;
+    int box = -1;
+    forStaticNear(held.X_W->p, held.radius, [&](int k) {
+      if (statics.owner[k] == self || !shapesCollide(held, placedStatic(k))) return false;
+      box = k;
+      return true;
+    });
+    return box;
   }
 
   /// The first pair of the robot's bodies (or a body and the held object) found colliding.

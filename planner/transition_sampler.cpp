@@ -231,12 +231,17 @@ bool regular(const ArmConfig& q, double margin) {
   return std::abs(std::sin(q[2])) >= margin && std::abs(std::sin(q[4])) >= margin;
 }
 
-/// Keys of a straight TCP line from X_from (at q_from) by delta_W, every cartesian_step or
-/// closer, q_from excluded: each the IK solution nearest the previous key, regular, within
-/// max_step_jump of it. std::nullopt when the line leaves the workspace or would jump.
+/// How many equal steps a straight TCP line by delta_W takes: each cartesian_step or shorter.
+int lineSteps(const Vector3d& delta_W, const TransitionSettings& settings) {
+  return std::max(1, static_cast<int>(std::ceil(delta_W.norm() / settings.cartesian_step - 1e-9)));
+}
+
+/// Keys of a straight TCP line from X_from (at q_from) by delta_W in lineSteps steps, q_from
+/// excluded: each the IK solution nearest the previous key, regular, within max_step_jump of
+/// it. std::nullopt when the line leaves the workspace or would jump.
 std::optional<std::vector<ArmConfig>> straightLine(const Arm& arm, const Pose& X_from, const ArmConfig& q_from,
                                                    const Vector3d& delta_W, const TransitionSettings& settings) {
-  const int steps = std::max(1, static_cast<int>(std::ceil(delta_W.norm() / settings.cartesian_step - 1e-9)));
+  const int steps = lineSteps(delta_W, settings);
   std::vector<ArmConfig> keys;
   ArmConfig previous = q_from;
   for (int k = 1; k <= steps; ++k) {
@@ -540,6 +545,31 @@ std::vector<Matrix3d> placeOrientations(const Vector3d& size, const Matrix3d& R_
   return orientations;
 }
 
+/// The height above its placement of an object carried in to it down (`vertical`) or across
+/// from `d` away, on piece k of the line's n, ending `release` above it.
+double heightIn(double release, bool vertical, double d, std::size_t k, std::size_t n) {
+  const auto pieces = static_cast<double>(n);
+  return release + (vertical ? d * (pieces - static_cast<double>(k) - 1.0) / pieces : 0.0);  // after piece k
+}
+
+/// Whether the held object alone keeps clear of the static scene along the line into a
+/// release pose X_WT from `d` back, where placeAlong would check it (the keys of pieces off
+/// the support). Where it does not, no arm can carry it in that way: tried before any IK.
+bool heldClearAlong(Context& c, const Part& p, const Pose& X_WT, double release, bool vertical, double d) {
+  const Vector3d delta = d * X_WT.linear().col(2);
+  const Pose X_from = backedOff(X_WT, d);
+  const Pose X_TO = p.grasp.X_OT.inverse();
+  const int n = lineSteps(delta, c.settings);
+  const auto objectAt = [&](int k) { return shifted(X_from, delta * (static_cast<double>(k) / n)) * X_TO; };
+  for (int k = 0; k < n; ++k) {
+    if (onSupport(c, heightIn(release, vertical, d, static_cast<std::size_t>(k), static_cast<std::size_t>(n)))) continue;
+    for (const int key : {k, k + 1}) {
+      if (!c.checker.heldObjectFree(p.arm->robot, p.object, objectAt(key))) return false;
+    }
+  }
+  return true;
+}
+
 /// Along the line `in` to the release pose `release` above the placement, open, dwell,
 /// retreat the same way with the object resting.
 std::optional<TransitionSample> placeAlong(Context& c, const Part& p, double release, bool vertical, double d,
@@ -549,8 +579,7 @@ std::optional<TransitionSample> placeAlong(Context& c, const Part& p, double rel
   MotionBuilder m(*p.arm, in.start, s);
   const auto n = static_cast<double>(in.keys.size());
   for (std::size_t k = 0; k < in.keys.size(); ++k) {
-    const double remaining = d * (n - static_cast<double>(k) - 1.0) / n;  // after this piece
-    const double height = release + (vertical ? remaining : 0.0);
+    const double height = heightIn(release, vertical, d, k, in.keys.size());
     m.moveTo(in.keys[k], d / n, {p.grasp.finger, heldIn(p, !onSupport(c, height)), std::nullopt});
   }
   m.grip(GripperAction::kOpen);
@@ -600,7 +629,8 @@ std::optional<TransitionSample> placeSample(Context& c, const Part& p) {
   if (!vertical && std::abs(approach.z()) > kAxisTolerance) return std::nullopt;
   const double release = vertical ? s.drop_height : s.slide_height;
   const Pose X_WT = shifted(p.X_WO, release * kUp) * p.grasp.X_OT;
-  const auto from = [&](double distance) {
+  const auto from = [&](double distance) -> std::optional<TransitionSample> {
+    if (!heldClearAlong(c, p, X_WT, release, vertical, distance)) return std::nullopt;
     return firstLine(*p.arm, backedOff(X_WT, distance), distance * approach, s,
                      [&](const Line& in) { return placeAlong(c, p, release, vertical, distance, in); });
   };
