@@ -675,6 +675,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     std::vector<Precedence> extra;
     std::vector<DetourConstraint> detours;
     int parkings = 0;
+    bool folded = false;  ///< a robot was folded out of the way on the way here
     Schedule schedule;
     std::uint64_t order = 0;
     double clear_until = 0.0;  ///< [s] no conflict before this time
@@ -710,7 +711,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
   std::uint64_t created = 0;
   // a node: its segments at the earliest times their temporal network allows
   const auto make = [&](std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
-                        std::vector<DetourConstraint> detours, int parkings) -> std::optional<Node> {
+                        std::vector<DetourConstraint> detours, int parkings, bool folded) -> std::optional<Node> {
     std::vector<Edge> edges = baseConstraints(graph, history, segments, steps);
     for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
     std::optional<std::vector<Millis>> start = earliestStarts(segments.size(), edges);
@@ -719,29 +720,32 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.segments = std::move(segments);
     schedule.start = std::move(*start);
     schedule.makespan = makespanOf(schedule);
-    return Node{std::move(extra), std::move(detours), parkings, std::move(schedule), created++, 0.0, std::nullopt};
+    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created++, 0.0, std::nullopt};
   };
   // Reroutes already tried, by kind (detour or parking), move and states to keep clear of (in
   // any order): the same conflict comes back in many nodes, and asked again a reroute takes the
   // answer found before (a new search could differ only where the roadmap grew meanwhile). Only
-  // new ones count against max_reroutes.
+  // new ones count against max_reroutes: the nodes below a folded robot's and the others each
+  // have that many, so that the search behind a fold does not use up those of a way without one.
   using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
   struct Reroute {
     bool parking = false;
     const Move* move = nullptr;
     std::vector<Obstacle> avoid;
     std::optional<MoveParts> parts;
+    bool folded = false;  ///< asked for below a fold
   };
   std::vector<Reroute> tried;
-  const auto reroute = [&](bool parking, const Move& move, const std::vector<Obstacle>& avoid,
+  const auto reroute = [&](const Node& node, bool parking, const Move& move, const std::vector<Obstacle>& avoid,
                            const std::function<std::optional<MoveParts>()>& plan) -> std::optional<MoveParts> {
     const auto known = std::find_if(tried.begin(), tried.end(), [&](const Reroute& r) {
       return r.parking == parking && r.move == &move && r.avoid.size() == avoid.size() &&
              std::is_permutation(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
     });
     if (known != tried.end()) return known->parts;
-    if (tried.size() >= static_cast<std::size_t>(budget.max_reroutes)) return std::nullopt;
-    tried.push_back({parking, &move, avoid, plan()});
+    const auto same_side = [&](const Reroute& r) { return r.folded == node.folded; };
+    if (std::count_if(tried.begin(), tried.end(), same_side) >= budget.max_reroutes) return std::nullopt;
+    tried.push_back({parking, &move, avoid, plan(), node.folded});
     return tried.back().parts;
   };
   // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
@@ -756,7 +760,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     }
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
-    const std::optional<MoveParts> found = reroute(false, *it->original, obstacles, [&]() -> std::optional<MoveParts> {
+    const std::optional<MoveParts> found = reroute(node, false, *it->original, obstacles, [&]() -> std::optional<MoveParts> {
       const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
         return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
                                      graph.scene().configuration(seg.robot, b, seg.finger), seg.held, obstacles);
@@ -769,7 +773,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     std::vector<ScheduleSegment> segments = node.schedule.segments;
     segments[segment].move = move;
     segments[segment].duration = move->duration;
-    return make(std::move(segments), node.extra, std::move(detours), node.parkings);
+    return make(std::move(segments), node.extra, std::move(detours), node.parkings, node.folded);
   };
   // the child where the robot, instead of standing where move `segment` starts, goes early to a
   // configuration clear of `avoid` and waits there: the move split in two at that parking. A
@@ -791,7 +795,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     };
     const core::ArmConfig& folded = graph.idleConfiguration(seg.robot, IdlePose::kFolded);
     const std::optional<MoveParts> split =
-        !fold ? reroute(true, *seg.move, avoid, [&] { return graph.parking(*seg.move, clear); })
+        !fold ? reroute(node, true, *seg.move, avoid, [&] { return graph.parking(*seg.move, clear); })
         : clear(folded) ? graph.parkingAt(*seg.move, folded)
                         : std::nullopt;
     if (!split) return std::nullopt;
@@ -814,10 +818,10 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       splitIndex(segment, d.segment);
       detours.push_back(std::move(d));
     }
-    return make(std::move(segments), std::move(extra), std::move(detours), node.parkings + 1);
+    return make(std::move(segments), std::move(extra), std::move(detours), node.parkings + 1, node.folded || fold);
   };
 
-  if (std::optional<Node> root = make(base, {}, {}, 0)) {
+  if (std::optional<Node> root = make(base, {}, {}, 0, false)) {
     result.unresolved_makespan = root->schedule.makespan;
     if (budget.makespan_below && root->schedule.makespan >= *budget.makespan_below) {
       result.reason = "no schedule is shorter than " + std::to_string(*budget.makespan_below) + " ms";
@@ -869,7 +873,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       if (!p || std::find(node.extra.begin(), node.extra.end(), *p) != node.extra.end()) continue;
       std::vector<Precedence> extra = node.extra;
       extra.push_back(*p);
-      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings);
+      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings, node.folded);
       // a move into a transition that cannot end before the other starts just in time (both
       // robots going into one handoff) may arrive early and wait in front of it
       const std::vector<ScheduleSegment>& segments = node.schedule.segments;
@@ -879,7 +883,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
           segments[a + 1].motion != nullptr) {
         std::vector<ScheduleSegment> early = segments;
         early[a].early = true;
-        child = make(std::move(early), std::move(extra), node.detours, node.parkings);
+        child = make(std::move(early), std::move(extra), node.detours, node.parkings, node.folded);
       }
       // an order whose schedule is not below the bound leaves the conflict to a reroute
       if (child && push(std::move(*child))) ordered = true;

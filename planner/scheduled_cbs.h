@@ -45,8 +45,9 @@
 // starts" and "B ends before A starts" — each a precedence (hyperarc-hyperarc or
 // vertex-hyperarc scheduling constraint) on the segment starts. When neither order can hold (a
 // cycle with the schedule's own precedences), the low level changes a robot's route on its
-// roadmap instead (at most max_reroutes roadmap searches per call; a reroute asked again, the
-// same move around the same states, in another node gets the answer found before):
+// roadmap instead (at most max_reroutes roadmap searches per call, and as many again below a
+// folded robot, see below; a reroute asked again, the same move around the same states, in
+// another node gets the answer found before):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
@@ -119,7 +120,9 @@ struct ConflictResolutionBudget {
   double focal_weight = 1.0;
   /// Nodes whose makespan reaches this are dropped (none: every node is kept).
   std::optional<Millis> makespan_below;
-  int max_reroutes = 24;     ///< detours and parkings searched for (repeats are not searched again)
+  /// Detours and parkings searched for (repeats are not searched again); the nodes below a
+  /// folded robot have as many of their own.
+  int max_reroutes = 24;
   std::function<bool()> stop;  ///< true when time is up (may be empty)
 };
 

@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <string>
+#include <utility>
 
 #include "planner/dash_planner.h"
 
@@ -20,8 +21,9 @@ struct WorldGraph {
   core::LoadedWorld world;
   TaskSpaceHypergraph task_space;
   MotionHypergraph graph;
-  explicit WorldGraph(const std::string& path, std::uint64_t seed = 7)
-      : world(core::loadWorld(path)),
+  explicit WorldGraph(const std::string& path, std::uint64_t seed = 7) : WorldGraph(core::loadWorld(path), seed) {}
+  WorldGraph(core::LoadedWorld loaded, std::uint64_t seed)
+      : world(std::move(loaded)),
         task_space(TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach)),
         graph(world, task_space, seed) {}
 };

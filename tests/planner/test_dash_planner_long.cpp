@@ -360,3 +360,24 @@ TEST_CASE("a robot standing in the others' way folds back over its base to wait 
   }
   CHECK(folds >= 1);
 }
+
+TEST_CASE("the search below a folded robot has re-routes of its own and leaves the others theirs",
+          "[planner][dash][shelf]") {
+  // 6 shelf objects, seed 4: round 1's first greedy task plan resolves without a fold. Folded
+  // children come first there, and when the nodes below them shared the 24 re-routes with the
+  // rest, they used them up: no schedule in 500 nodes
+  WorldGraph g(core::validateWorld(tools::generateShelving({6, 4})), 4);
+  MotionHypergraph& graph = g.graph;
+  const SearchResult found = HyperpathSearch(graph).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  REQUIRE_FALSE(found.plan->sequential);
+  ConflictResolutionBudget budget;  // the planner's first try
+  budget.max_nodes = 500;
+  budget.focal_weight = kGreedyConflictFocalWeight;
+  budget.max_reroutes = 24;
+  const ConflictResult resolved = resolveConflicts(graph, *found.plan, budget);
+  INFO(resolved.reason);
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  CHECK_FALSE(firstConflict(graph, *resolved.schedule).has_value());
+  CHECK(resolved.constraints > 0);
+}
