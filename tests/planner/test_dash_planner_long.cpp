@@ -36,6 +36,22 @@ PlanResult solvedValid(const core::LoadedWorld& world, const PlannerSettings& se
   return result;
 }
 
+/// The first greedy task plan on `graph`, which must be a direct one, resolved as the
+/// planner's first try does (500 nodes, Greedy's focal weight, 24 re-routes); it must resolve.
+ConflictResult firstTaskPlanResolved(MotionHypergraph& graph) {
+  const SearchResult found = HyperpathSearch(graph).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  REQUIRE_FALSE(found.plan->sequential);
+  ConflictResolutionBudget budget;
+  budget.max_nodes = 500;
+  budget.focal_weight = kGreedyConflictFocalWeight;
+  budget.max_reroutes = 24;
+  ConflictResult resolved = resolveConflicts(graph, *found.plan, budget);
+  INFO(resolved.reason);
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  return resolved;
+}
+
 }  // namespace
 
 TEST_CASE("shelving task plans fill the back slot before the front slot in front of it", "[planner][dash][shelf]") {
@@ -326,16 +342,7 @@ TEST_CASE("a robot standing in the others' way folds back over its base to wait 
   // 500 nodes)
   WorldGraph g(worldPath("handwritten/u05_corners_4r.yaml"), 1);
   MotionHypergraph& graph = g.graph;
-  const SearchResult found = HyperpathSearch(graph).greedy({});
-  REQUIRE(found.status == SearchStatus::kFound);
-  REQUIRE_FALSE(found.plan->sequential);
-  ConflictResolutionBudget budget;  // the planner's first try
-  budget.max_nodes = 500;
-  budget.focal_weight = kGreedyConflictFocalWeight;
-  budget.max_reroutes = 24;
-  const ConflictResult resolved = resolveConflicts(graph, *found.plan, budget);
-  INFO(resolved.reason);
-  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const ConflictResult resolved = firstTaskPlanResolved(graph);
   const Schedule& schedule = *resolved.schedule;
   CHECK_FALSE(firstConflict(graph, schedule).has_value());
 
@@ -368,16 +375,7 @@ TEST_CASE("the search below a folded robot has re-routes of its own and leaves t
   // rest, they used them up: no schedule in 500 nodes
   WorldGraph g(core::validateWorld(tools::generateShelving({6, 4})), 4);
   MotionHypergraph& graph = g.graph;
-  const SearchResult found = HyperpathSearch(graph).greedy({});
-  REQUIRE(found.status == SearchStatus::kFound);
-  REQUIRE_FALSE(found.plan->sequential);
-  ConflictResolutionBudget budget;  // the planner's first try
-  budget.max_nodes = 500;
-  budget.focal_weight = kGreedyConflictFocalWeight;
-  budget.max_reroutes = 24;
-  const ConflictResult resolved = resolveConflicts(graph, *found.plan, budget);
-  INFO(resolved.reason);
-  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const ConflictResult resolved = firstTaskPlanResolved(graph);
   CHECK_FALSE(firstConflict(graph, *resolved.schedule).has_value());
   CHECK(resolved.constraints > 0);
 }
