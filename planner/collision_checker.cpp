@@ -10,6 +10,7 @@
 
 #include "planner/collision_checker_state.h"
 #include "planner/collision_scene_data.h"
+#include "planner/collision_sweep.h"
 
 namespace dashbed::planner {
 
@@ -294,90 +295,39 @@ bool CollisionChecker::motionFree(int robot, const CurvePiece& piece, std::span<
 
 bool CollisionChecker::motionFree(int robot, const detail::MotionRef& motion, std::span<const RestingObject> objects,
                                   const std::optional<HeldObject>& held) {
-  const detail::SceneData& scene = *scene_->data_;
-  const RobotData& data = requireRobot(scene, robot);
-  const int n = motionSamples(robot, motion, held).first;
-  requireObjects(scene, objects);
-  auto& state = *state_;
-  auto& slot = state.slots[robot];
-  return !state.sweep(slot, data, motion, held, n, [&](double) { return state.robotCollision(slot, objects); });
+  const std::optional<std::vector<char>> hits = motionHits(robot, motion, objects, held, {true, true});
+  return hits && std::none_of(hits->begin(), hits->end(), [](char hit) { return hit != 0; });
 }
 
 std::vector<char> CollisionChecker::motionObjectHits(int robot, const Eigen::VectorXd& q_from,
                                                      const Eigen::VectorXd& q_to,
                                                      std::span<const RestingObject> objects,
                                                      const std::optional<HeldObject>& held) {
-  return *motionHits(robot, detail::MotionRef{q_from, q_to}, objects, held, false);
+  return *motionHits(robot, detail::MotionRef{q_from, q_to}, objects, held, {false, false});
 }
 
 std::vector<char> CollisionChecker::motionObjectHits(int robot, const CurvePiece& piece,
                                                      std::span<const RestingObject> objects,
                                                      const std::optional<HeldObject>& held) {
-  return *motionHits(robot, detail::MotionRef{piece.from, piece.to, &piece}, objects, held, false);
+  return *motionHits(robot, detail::MotionRef{piece.from, piece.to, &piece}, objects, held, {false, false});
 }
 
 std::optional<std::vector<char>> CollisionChecker::motionCheck(int robot, const Eigen::VectorXd& q_from,
                                                                const Eigen::VectorXd& q_to,
                                                                std::span<const RestingObject> objects,
                                                                const std::optional<HeldObject>& held) {
-  return motionHits(robot, detail::MotionRef{q_from, q_to}, objects, held, true);
+  return motionHits(robot, detail::MotionRef{q_from, q_to}, objects, held, {true, false});
 }
 
 std::optional<std::vector<char>> CollisionChecker::motionHits(int robot, const detail::MotionRef& motion,
                                                               std::span<const RestingObject> objects,
                                                               const std::optional<HeldObject>& held,
-                                                              bool check_robot) {
+                                                              const detail::SweepRequest& request) {
   const detail::SceneData& scene = *scene_->data_;
   const RobotData& data = requireRobot(scene, robot);
-  const int n = motionSamples(robot, motion, held).first;
+  const auto [n, step_travel] = motionSamples(robot, motion, held);
   requireObjects(scene, objects);
-  std::vector<char> hits(objects.size(), 0);
-  if (objects.empty() && !check_robot) return hits;
-  auto& state = *state_;
-  auto& slot = state.slots[robot];
-  std::vector<detail::Frame> poses;
-  poses.reserve(objects.size());
-  for (const RestingObject& resting : objects) poses.emplace_back(resting.X_WO);
-  const detail::ObjectData* held_data = held ? &scene.objects[held->object] : nullptr;
-  // An object is tested at a sample only when its bounding sphere reaches the box around the
-  // robot's body spheres (and held object) there: otherwise every sphere test of
-  // oneObjectCollision rejects it. The slack keeps rounding on the safe side.
-  constexpr double kSlack = 1e-6;
-  // objects apart from the box at the first sample grown by the motion's travel bound (no
-  // sphere centre moves farther) are never reached
-  std::vector<std::size_t> near;
-  near.reserve(objects.size());
-  bool first = true;
-  bool collides = false;
-  std::size_t left = 0;
-  // stops at a collision with the static scene or itself, or when nothing is left to find
-  state.sweep(slot, data, motion, held, n, [&](double) {
-    if (check_robot && (state.staticHit(slot) || state.selfHit(slot))) return collides = true;
-    if (first || left > 0) detail::CheckerState::updateBounds(slot, held_data);
-    if (first) {
-      first = false;
-      const double travel = n * scene.settings.motion_step + 1e-4;
-      for (std::size_t k = 0; k < objects.size(); ++k) {
-        if (held && objects[k].object == held->object) continue;  // never a hit
-        const detail::ObjectData& object = scene.objects[objects[k].object];
-        if (!detail::sphereAabbApart(poses[k].p, object.radius + travel + kSlack, slot.lo, slot.hi)) near.push_back(k);
-      }
-      left = near.size();
-      if (left == 0 && !check_robot) return true;
-    }
-    for (const std::size_t k : near) {
-      if (left == 0) break;
-      if (hits[k]) continue;
-      const detail::ObjectData& object = scene.objects[objects[k].object];
-      if (detail::sphereAabbApart(poses[k].p, object.radius + kSlack, slot.lo, slot.hi)) continue;
-      if (!state.oneObjectCollision(slot, objects[k], poses[k])) continue;
-      hits[k] = 1;
-      if (--left == 0 && !check_robot) return true;
-    }
-    return false;
-  });
-  if (collides) return std::nullopt;
-  return hits;
+  return detail::sweepMotion(*state_, data, motion, held, n, step_travel, objects, request);
 }
 
 bool CollisionChecker::motionsFree(int robot_a, const Eigen::VectorXd& q_a_from, const Eigen::VectorXd& q_a_to,

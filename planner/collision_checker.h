@@ -53,6 +53,12 @@
 // For the UR5e + Hand-E the bounds R_j are 1.23, 1.23, 0.81, 0.39, 0.29, 0.19 m (sum 4.1 m):
 // a turn of the base alone is sampled every 2.4 mrad, all six joints turning together every
 // 0.7 mrad (0.5 rad on every joint: about 690 samples).
+// A single robot's motion (motionFree, motionCheck, motionObjectHits) is not evaluated at all of
+// them (collision_sweep.h): each body against the static scene, each checked body pair, the held
+// object and each resting object is an item of its own; where a sample finds an item apart, the
+// prefilters that separate it also bound the gap, and the samples at which the joints between
+// the item's parts cannot have closed that gap are known free. The answers are those of checking
+// every sample.
 
 #include <cstdint>
 #include <functional>
@@ -146,6 +152,7 @@ namespace detail {
 struct SceneData;
 struct CheckerState;
 struct MotionRef;
+struct SweepRequest;
 }  // namespace detail
 
 /// The immutable collision model of a world: static geometry in a broad phase, the robots'
@@ -217,6 +224,7 @@ class CollisionChecker {
   /// Counts of work done, for benchmarks and tuning.
   struct Counters {
     std::uint64_t configurations = 0;  ///< robot configurations evaluated (FK + checks)
+    std::uint64_t motion_samples = 0;  ///< samples of single-robot motions, evaluated or known free
     std::uint64_t narrow_phase = 0;    ///< FCL primitive pair tests
   };
 
@@ -328,7 +336,8 @@ class CollisionChecker {
                   const std::optional<HeldObject>& held);
   std::optional<std::vector<char>> motionHits(int robot, const detail::MotionRef& motion,
                                               std::span<const RestingObject> objects,
-                                              const std::optional<HeldObject>& held, bool check_robot);
+                                              const std::optional<HeldObject>& held,
+                                              const detail::SweepRequest& request);
   bool motionClearOf(int robot, const detail::MotionRef& motion, const std::optional<HeldObject>& held,
                      std::span<const StandingRobot> others);
 

@@ -4,7 +4,9 @@
 // least kPrefilterTolerance apart, in front of FCL's primitive narrow phase, which decides every
 // close call.
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <fcl/geometry/shape/box.h>
 #include <fcl/geometry/shape/cylinder.h>
@@ -58,19 +60,29 @@ inline bool sphereObbApart(const Vector3d& c, double r, const Frame& X_WB, const
   return outside.squaredNorm() > rr * rr;
 }
 
+/// The sphere (c, r)'s margin from the oriented box (X_WB, half extents) beyond
+/// kPrefilterTolerance: when positive, a lower bound on their distance [m].
+inline double sphereObbMargin(const Vector3d& c, double r, const Frame& X_WB, const Vector3d& half) {
+  const Vector3d p = X_WB.R.transpose() * (c - X_WB.p);
+  return (p.cwiseAbs() - half).cwiseMax(0.0).norm() - r - kPrefilterTolerance;
+}
+
 /// Separating-axis test of two oriented boxes (Gottschalk, Lin, Manocha: "OBBTree", SIGGRAPH
-/// 1996): true only when some axis separates them by more than kPrefilterTolerance.
-inline bool obbsApart(const Frame& X_WA, const Vector3d& a, const Frame& X_WB, const Vector3d& b) {
+/// 1996): visits the margin by which each of the 15 axes separates them beyond
+/// kPrefilterTolerance, until visit(margin) returns true; true when stopped. A positive margin
+/// bounds the boxes' distance from below (the edge-pair axes A_i x B_j have length <= 1).
+template <class Visit>
+inline bool obbMargins(const Frame& X_WA, const Vector3d& a, const Frame& X_WB, const Vector3d& b, Visit&& visit) {
   const Eigen::Matrix3d R = X_WA.R.transpose() * X_WB.R;
   const Vector3d t = X_WA.R.transpose() * (X_WB.p - X_WA.p);
   // the epsilon keeps near-parallel edge pairs (cross product ~ 0) from separating falsely
   const Eigen::Matrix3d absR = R.cwiseAbs().array() + 1e-9;
   const double tol = kPrefilterTolerance;
   for (int i = 0; i < 3; ++i) {
-    if (std::abs(t[i]) > a[i] + absR.row(i).dot(b) + tol) return true;
+    if (visit(std::abs(t[i]) - (a[i] + absR.row(i).dot(b)) - tol)) return true;
   }
   for (int j = 0; j < 3; ++j) {
-    if (std::abs(t.dot(R.col(j))) > absR.col(j).dot(a) + b[j] + tol) return true;
+    if (visit(std::abs(t.dot(R.col(j))) - (absR.col(j).dot(a) + b[j]) - tol)) return true;
   }
   // A_i x B_j; the tolerance is not scaled by |A_i x B_j| <= 1, which keeps the test conservative
   for (int i = 0; i < 3; ++i) {
@@ -81,10 +93,15 @@ inline bool obbsApart(const Frame& X_WA, const Vector3d& a, const Frame& X_WB, c
       const int j2 = (j + 2) % 3;
       const double ra = a[i1] * absR(i2, j) + a[i2] * absR(i1, j);
       const double rb = b[j1] * absR(i, j2) + b[j2] * absR(i, j1);
-      if (std::abs(t[i2] * R(i1, j) - t[i1] * R(i2, j)) > ra + rb + tol) return true;
+      if (visit(std::abs(t[i2] * R(i1, j) - t[i1] * R(i2, j)) - (ra + rb) - tol)) return true;
     }
   }
   return false;
+}
+
+/// True only when some axis separates the boxes by more than kPrefilterTolerance.
+inline bool obbsApart(const Frame& X_WA, const Vector3d& a, const Frame& X_WB, const Vector3d& b) {
+  return obbMargins(X_WA, a, X_WB, b, [](double margin) { return margin > 0.0; });
 }
 
 /// Half the width of a placed shape's projection on the unit axis u (its support function).
@@ -105,48 +122,78 @@ inline double halfWidth(const Placed& shape, const Vector3d& u) {
   return 0.0;
 }
 
-/// True when the axis (any length) separates the shapes by more than kPrefilterTolerance;
-/// d is the vector between their centres.
-inline bool separatedAlong(const Placed& a, const Placed& b, const Vector3d& d, const Vector3d& axis) {
+/// The margin by which the axis (any length) separates the shapes beyond kPrefilterTolerance
+/// (-infinity for a null axis): when positive, a lower bound on their distance; d is the vector
+/// between their centres.
+inline double separationAlong(const Placed& a, const Placed& b, const Vector3d& d, const Vector3d& axis) {
   const double norm2 = axis.squaredNorm();
-  if (norm2 < 1e-12) return false;
+  if (norm2 < 1e-12) return -std::numeric_limits<double>::infinity();
   const Vector3d u = axis / std::sqrt(norm2);
-  return std::abs(d.dot(u)) > halfWidth(a, u) + halfWidth(b, u) + kPrefilterTolerance;
+  return std::abs(d.dot(u)) - (halfWidth(a, u) + halfWidth(b, u)) - kPrefilterTolerance;
 }
 
-/// Separating-axis test with the shapes' exact projections, for pairs with a cylinder. The
-/// candidate axes: the centre line; each cylinder's axis and the centre line's part across it;
-/// each box's face normals; a cylinder's axis crossed with the other shape's axes. A box's
-/// bounding box is loose for a cylinder (its corners stick out by 41% of the radius), which
-/// would hand many touching-by-construction neighbours to the expensive GJK.
-inline bool roundApart(const Placed& a, const Placed& b) {
-  const Vector3d d = b.X_W->p - a.X_W->p;
-  // a box's face normals first: against large fixtures they are the separating axes
+/// Separating-axis test with the shapes' exact projections, for pairs with a cylinder: visits
+/// the candidate axes (any length) until visit(axis) returns true; true when stopped. The
+/// candidates: each box's face normals (against large fixtures they separate); the centre line
+/// d; each cylinder's axis and the centre line's part across it; a cylinder's axis crossed with
+/// the other shape's axes. A box's bounding box is loose for a cylinder (its corners stick out
+/// by 41% of the radius), which would hand many touching-by-construction neighbours to the
+/// expensive GJK.
+template <class Visit>
+inline bool roundAxes(const Placed& a, const Placed& b, const Vector3d& d, Visit&& visit) {
   for (const Placed* shape : {&a, &b}) {
     if (shape->type != ShapeType::kBox) continue;
     const Eigen::Matrix3d& R = shape->X_W->R;
     for (int i = 0; i < 3; ++i) {
-      if (separatedAlong(a, b, d, R.col(i))) return true;
+      if (visit(R.col(i))) return true;
     }
   }
-  if (separatedAlong(a, b, d, d)) return true;
+  if (visit(d)) return true;
   for (const Placed* shape : {&a, &b}) {
     if (shape->type != ShapeType::kCylinder) continue;
     const Vector3d axis = shape->X_W->R.col(2);
-    if (separatedAlong(a, b, d, axis) || separatedAlong(a, b, d, d - d.dot(axis) * axis)) return true;
+    if (visit(axis) || visit(d - d.dot(axis) * axis)) return true;
   }
   for (const auto& [cylinder, other] : {std::pair{&a, &b}, std::pair{&b, &a}}) {
     if (cylinder->type != ShapeType::kCylinder || other->type == ShapeType::kSphere) continue;
     const Vector3d axis = cylinder->X_W->R.col(2);
     const Eigen::Matrix3d& R = other->X_W->R;
     if (other->type == ShapeType::kCylinder) {
-      return separatedAlong(a, b, d, axis.cross(R.col(2)));  // both axes done; the pair is symmetric
+      return visit(axis.cross(R.col(2)));  // both axes done; the pair is symmetric
     }
     for (int i = 0; i < 3; ++i) {
-      if (separatedAlong(a, b, d, axis.cross(R.col(i)))) return true;
+      if (visit(axis.cross(R.col(i)))) return true;
     }
   }
   return false;
+}
+
+/// True only when some roundAxes axis separates the shapes by more than kPrefilterTolerance.
+inline bool roundApart(const Placed& a, const Placed& b) {
+  const Vector3d d = b.X_W->p - a.X_W->p;
+  return roundAxes(a, b, d, [&](const Vector3d& axis) { return separationAlong(a, b, d, axis) > 0.0; });
+}
+
+/// The largest margin by which the prefilters of a shape pair (bounding spheres, then the
+/// separating axes of its shape types) separate two shapes beyond kPrefilterTolerance: when
+/// positive, a lower bound on their distance [m]; otherwise they may touch.
+inline double separation(const Placed& a, const Placed& b) {
+  const Vector3d d = b.X_W->p - a.X_W->p;
+  double best = d.norm() - a.radius - b.radius - kPrefilterTolerance;
+  const auto keep = [&best](double margin) {
+    best = std::max(best, margin);
+    return false;
+  };
+  if (a.type == ShapeType::kBox && b.type == ShapeType::kBox) {
+    obbMargins(*a.X_W, *a.half, *b.X_W, *b.half, keep);
+  } else if (a.type == ShapeType::kSphere && b.type == ShapeType::kBox) {
+    keep(sphereObbMargin(a.X_W->p, a.radius, *b.X_W, *b.half));
+  } else if (b.type == ShapeType::kSphere && a.type == ShapeType::kBox) {
+    keep(sphereObbMargin(b.X_W->p, b.radius, *a.X_W, *a.half));
+  } else if (a.type != ShapeType::kSphere || b.type != ShapeType::kSphere) {
+    roundAxes(a, b, d, [&](const Vector3d& axis) { return keep(separationAlong(a, b, d, axis)); });
+  }
+  return best;
 }
 
 /// True when the point p lies inside the shape, at least kPrefilterTolerance from its surface:

@@ -862,10 +862,12 @@ TEST_CASE("A curved motion is checked along its curve at its peak speed's sample
   CHECK_FALSE(dut.motionFree(0, turn_first, {}));
   dut.resetCounters();
   CHECK(dut.motionFree(0, lift_first, {}));
-  // at twice the straight line's samples: every step within the motion step
+  // at twice the straight line's samples: every step within the motion step (the samples
+  // within a measured gap of one evaluated are known free without being evaluated)
   const double travel = plate.scene.motionTravel(0, q_from, q_to);
   const auto n = static_cast<std::uint64_t>(std::ceil(2 * travel / plate.scene.settings().motion_step - 1e-9));
-  CHECK(dut.counters().configurations == n + 1);
+  CHECK(dut.counters().motion_samples == n + 1);
+  CHECK(dut.counters().configurations <= n + 1);
   CHECK(n + 1 > 2 * static_cast<std::uint64_t>(plate.scene.motionSteps(0, q_from, q_to)) - 2);
   // a curve whose peak bound is unset or below 1, or that gives configurations of the wrong
   // size, is refused
@@ -879,6 +881,57 @@ TEST_CASE("A curved motion is checked along its curve at its peak speed's sample
   CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
   bad.at = nullptr;
   CHECK_THROWS_AS(dut.motionFree(0, bad, {}), std::invalid_argument);
+}
+
+TEST_CASE("Motion queries skip the samples within measured gaps and agree with robotFree at every sample",
+          "[planner][collision]") {
+  const auto& loaded = sortingWorld();
+  const core::World& world = *loaded.world;
+  const CollisionScene& scene = sortingScene();
+  CollisionChecker dut(scene);
+  CollisionChecker check(scene);
+  RandomQueries random(23);
+  int free = 0, blocked = 0, touching = 0;
+  std::uint64_t samples_of_free = 0, evaluated_of_free = 0;
+  for (int trial = 0; trial < 80; ++trial) {
+    const VectorXd a = random.towardsCentre((*loaded.robots)[0]);
+    VectorXd b = a;
+    for (int j = 0; j < 6; ++j) b[j] += random.uniform(-0.3, 0.3);
+    const auto held = random.held(world, 0.4);
+    const std::vector<RestingObject> objects = random.objects(world, linkOrigins((*loaded.robots)[0], b));
+    const int n = scene.motionSteps(0, a, b, held);
+    std::vector<VectorXd> samples;
+    for (int k = 0; k <= n; ++k) samples.emplace_back(a + (static_cast<double>(k) / n) * (b - a));
+    const auto all = [&](std::span<const RestingObject> among) {
+      return std::all_of(samples.begin(), samples.end(), [&](const VectorXd& q) { return check.robotFree(0, q, among, held); });
+    };
+    dut.resetCounters();
+    const bool expected_free = all(objects);
+    REQUIRE(dut.motionFree(0, a, b, objects, held) == expected_free);
+    if (expected_free) {
+      ++free;
+      CHECK(dut.counters().motion_samples == static_cast<std::uint64_t>(n) + 1);
+      samples_of_free += dut.counters().motion_samples;
+      evaluated_of_free += dut.counters().configurations;
+    }
+    const std::optional<std::vector<char>> hits = dut.motionCheck(0, a, b, objects, held);
+    REQUIRE(hits.has_value() == all({}));
+    if (!hits) {
+      ++blocked;
+      continue;
+    }
+    for (std::size_t k = 0; k < objects.size(); ++k) {
+      const bool expected = !all(std::span(&objects[k], 1));
+      CHECK(static_cast<bool>((*hits)[k]) == expected);
+      touching += expected;
+    }
+  }
+  // both answers of each query are covered
+  CHECK(free > 10);
+  CHECK(blocked > 10);
+  CHECK(touching > 0);
+  // most samples of the free motions are known free without being evaluated
+  CHECK(evaluated_of_free * 2 < samples_of_free);
 }
 
 TEST_CASE("Curve queries agree with the single-configuration checks at the curve's samples", "[planner][collision]") {
