@@ -226,7 +226,8 @@ std::optional<std::vector<char>> sweepMotion(CheckerState& state, const RobotDat
   std::vector<Item> items;
   if (request.check_robot) {
     for (const int b : robot.static_order) {
-      items.push_back({Kind::kBodyStatic, b, -1, closing([&] { addChainRates(robot, b, ownReach(robot, b), -1, rates); })});
+      const double body_closing = closing([&] { addChainRates(robot, b, ownReach(robot, b), -1, rates); });
+      items.push_back({Kind::kBodyStatic, b, -1, body_closing});
     }
     if (held && held->check_static) {
       items.push_back({Kind::kHeldStatic, -1, -1,
@@ -252,7 +253,9 @@ std::optional<std::vector<char>> sweepMotion(CheckerState& state, const RobotDat
     }
   }
   const std::size_t first_object = items.size();
-  for (std::size_t k = 0; k < objects.size(); ++k) items.push_back({Kind::kObject, static_cast<int>(k), -1, step_travel});
+  for (std::size_t k = 0; k < objects.size(); ++k) {
+    items.push_back({Kind::kObject, static_cast<int>(k), -1, step_travel});
+  }
   std::vector<char> hits(objects.size(), 0);
   if (items.empty()) return hits;
 

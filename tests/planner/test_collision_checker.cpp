@@ -903,7 +903,8 @@ TEST_CASE("Motion queries skip the samples within measured gaps and agree with r
     std::vector<VectorXd> samples;
     for (int k = 0; k <= n; ++k) samples.emplace_back(a + (static_cast<double>(k) / n) * (b - a));
     const auto all = [&](std::span<const RestingObject> among) {
-      return std::all_of(samples.begin(), samples.end(), [&](const VectorXd& q) { return check.robotFree(0, q, among, held); });
+      return std::all_of(samples.begin(), samples.end(),
+                         [&](const VectorXd& q) { return check.robotFree(0, q, among, held); });
     };
     dut.resetCounters();
     const bool expected_free = all(objects);

@@ -45,7 +45,8 @@ struct RandomShape {
         radius = half.x();
         geometry = std::make_shared<fcl::Sphered>(half.x());
     }
-    X_W.R = Eigen::Quaterniond(Eigen::Vector4d(unit(rng), unit(rng), unit(rng), unit(rng))).normalized().toRotationMatrix();
+    const Eigen::Vector4d q(unit(rng), unit(rng), unit(rng), unit(rng));
+    X_W.R = Eigen::Quaterniond(q).normalized().toRotationMatrix();
     X_W.p = Vector3d(place(rng), place(rng), place(rng));
   }
 
