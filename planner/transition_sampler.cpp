@@ -561,10 +561,13 @@ bool heldClearAlong(Context& c, const Part& p, const Pose& X_WT, double release,
   const Pose X_TO = p.grasp.X_OT.inverse();
   const int n = lineSteps(delta, c.settings);
   const auto objectAt = [&](int k) { return shifted(X_from, delta * (static_cast<double>(k) / n)) * X_TO; };
+  int checked = -1;  // the last key checked: a piece's start is the end of the piece before
   for (int k = 0; k < n; ++k) {
     if (onSupport(c, heightIn(release, vertical, d, static_cast<std::size_t>(k), static_cast<std::size_t>(n)))) continue;
     for (const int key : {k, k + 1}) {
+      if (key == checked) continue;
       if (!c.checker.heldObjectFree(p.arm->robot, p.object, objectAt(key))) return false;
+      checked = key;
     }
   }
   return true;
