@@ -310,6 +310,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (!(settings.conflict_focal_weight >= 1.0)) {
     throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
   }
+  if (settings.conflict_nodes < 1 || settings.conflict_nodes_along_time < 1) {
+    throw std::invalid_argument("planner settings: conflict_nodes, conflict_nodes_along_time: must be >= 1");
+  }
   if (settings.conflict_reroutes < 0 || settings.conflict_reroutes_retry < 0) {
     throw std::invalid_argument("planner settings: conflict_reroutes, conflict_reroutes_retry: must be >= 0");
   }
@@ -427,6 +430,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       weighted.max_reroutes = settings.conflict_reroutes_retry;
       weighted.makespan_below = best;
       weighted.order = order;
+      if (order == NodeOrder::kAlongTime) weighted.max_nodes = settings.conflict_nodes_along_time;
     }
     ConflictResult resolved;
     stats.conflict_seconds += secondsBeyondConstruction(*graph, [&] {

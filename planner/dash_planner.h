@@ -62,6 +62,13 @@ struct PlannerSettings {
   /// per conflict resolution (a sequential plan gets up to three: its steps one after
   /// another, then overlapping in the task plan's order and depth first along time)
   int conflict_nodes = 500;
+  /// per conflict resolution of the second try's depth first along time (see
+  /// conflict_reroutes_retry): it resolves the schedule's conflicts one after another along
+  /// time, so a crowded plan needs more nodes, not a wider search (a ring of 6 robots with 18
+  /// random cubes: with 500 none of its tries got further than 158 s along its schedule, and
+  /// the sequential plan of 259 s was returned; with 2000 round 2 resolves one in 958 nodes,
+  /// 172 s)
+  int conflict_nodes_along_time = 2000;
   /// The focal weight (ConflictResolutionBudget::focal_weight, >= 1) of the conflict
   /// resolution of the greedy queries' task plans (Greedy's, and MM-DaSH's until it has
   /// Greedy's plan); Next-Best Search's are resolved best first (1: the shortest first).
@@ -75,7 +82,8 @@ struct PlannerSettings {
   /// of a round's direct task plans resolves, the three of them with the shortest optimistic
   /// makespans are resolved again with this many reroutes, for a schedule shorter than the
   /// fallback's (no constraints fed back; not above conflict_reroutes: no second try):
-  /// each best first and, where that fails, depth first along time (NodeOrder::kAlongTime).
+  /// each best first and, where that fails, depth first along time (NodeOrder::kAlongTime,
+  /// with conflict_nodes_along_time nodes).
   /// Not before: a plan resolved with many reroutes may be longer than the sequential one.
   int conflict_reroutes_retry = 96;
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search

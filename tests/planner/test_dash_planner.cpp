@@ -9,6 +9,7 @@
 #include <iomanip>
 #include <map>
 #include <sstream>
+#include <stdexcept>
 #include <set>
 #include <string>
 
@@ -138,6 +139,42 @@ TEST_CASE("a robot colliding at home is a world error naming the file, line and 
   const auto location = "default.yaml:" + std::to_string(loaded.world->robots[1].where.line) + ":";
   CHECK_THROWS_AS(solve(loaded, testSettings()), core::WorldError);
   CHECK_THROWS_WITH(solve(loaded, testSettings()), Contains(location) && Contains(field) && Contains(what));
+}
+
+TEST_CASE("planner settings out of range are refused before any planning and named", "[planner][dash]") {
+  const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
+  PlannerSettings settings = testSettings();
+  std::string field;
+  SECTION("rounds") {
+    settings.max_rounds = 0;
+    field = "max_rounds";
+  }
+  SECTION("fallback rounds") {
+    settings.sequential_fallback_rounds = -1;
+    field = "sequential_fallback_rounds";
+  }
+  SECTION("focal weight") {
+    settings.conflict_focal_weight = 0.9;
+    field = "conflict_focal_weight";
+  }
+  SECTION("conflict nodes") {
+    settings.conflict_nodes = 0;
+    field = "conflict_nodes";
+  }
+  SECTION("conflict nodes along time") {
+    settings.conflict_nodes_along_time = 0;
+    field = "conflict_nodes_along_time";
+  }
+  SECTION("reroutes") {
+    settings.conflict_reroutes_retry = -1;
+    field = "conflict_reroutes_retry";
+  }
+  SECTION("direct time share") {
+    settings.direct_time_share = 0.0;
+    field = "direct_time_share";
+  }
+  CHECK_THROWS_AS(solve(world, settings), std::invalid_argument);
+  CHECK_THROWS_WITH(solve(world, settings), Contains("planner settings: ") && Contains(field));
 }
 
 TEST_CASE("an object no grasp can ever place makes the problem infeasible and is named", "[planner][dash]") {

@@ -278,6 +278,21 @@ TEST_CASE("a round's failed direct task plans resolved again with more reroutes 
   CHECK(second_try.stats.makespan < first_try.stats.makespan);
 }
 
+TEST_CASE("six robots in a ring get a direct plan from the second try along time with its own node budget",
+          "[planner][dash]") {
+  // six robots reaching into one shared centre: round 1 ends with a sequential plan, and no
+  // direct task plan resolves best first; depth first along time resolves the conflicts one
+  // after another and needs more than conflict_nodes for it (with 500 it stops part of the
+  // way, and the sequential plan is returned)
+  const core::LoadedWorld world =
+      core::validateWorld(tools::generateSorting({6, 6, 4, tools::StartLayout::kRandom, 1, tools::RobotLayout::kRing}));
+  const PlannerSettings settings;  // `dashbed plan`'s
+  REQUIRE(settings.conflict_nodes_along_time > settings.conflict_nodes);
+  const PlanResult result = solvedValid(world, settings);
+  CHECK_FALSE(result.stats.sequential);
+  CHECK(result.stats.rounds > 1);  // found in a round after the sequential fallback's
+}
+
 TEST_CASE("a plan with the robots parked out of every transition's way is a fallback: the direct queries go on",
           "[planner][dash]") {
   // the row of three with a cube of its own at each end: no direct task plan of round 1
