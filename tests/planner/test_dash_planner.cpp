@@ -6,12 +6,14 @@
 #include <algorithm>
 #include <cctype>
 #include <chrono>
+#include <functional>
 #include <iomanip>
 #include <map>
+#include <set>
 #include <sstream>
 #include <stdexcept>
-#include <set>
 #include <string>
+#include <vector>
 
 #include "controllers/trajectory_interpolator.h"
 #include "core/plan.h"
@@ -143,38 +145,23 @@ TEST_CASE("a robot colliding at home is a world error naming the file, line and 
 
 TEST_CASE("planner settings out of range are refused before any planning and named", "[planner][dash]") {
   const core::LoadedWorld world = core::loadWorld(worldPath("default.yaml"));
-  PlannerSettings settings = testSettings();
-  std::string field;
-  SECTION("rounds") {
-    settings.max_rounds = 0;
-    field = "max_rounds";
+  using Spoil = std::function<void(PlannerSettings&)>;
+  const std::vector<std::pair<std::string, Spoil>> out_of_range = {
+      {"max_rounds", [](PlannerSettings& s) { s.max_rounds = 0; }},
+      {"sequential_fallback_rounds", [](PlannerSettings& s) { s.sequential_fallback_rounds = -1; }},
+      {"conflict_focal_weight", [](PlannerSettings& s) { s.conflict_focal_weight = 0.9; }},
+      {"conflict_nodes", [](PlannerSettings& s) { s.conflict_nodes = 0; }},
+      {"conflict_nodes_along_time", [](PlannerSettings& s) { s.conflict_nodes_along_time = 0; }},
+      {"conflict_reroutes_retry", [](PlannerSettings& s) { s.conflict_reroutes_retry = -1; }},
+      {"direct_time_share", [](PlannerSettings& s) { s.direct_time_share = 0.0; }},
+  };
+  for (const auto& [field, spoil] : out_of_range) {
+    INFO(field);
+    PlannerSettings settings = testSettings();
+    spoil(settings);
+    CHECK_THROWS_AS(solve(world, settings), std::invalid_argument);
+    CHECK_THROWS_WITH(solve(world, settings), Contains("planner settings: ") && Contains(field));
   }
-  SECTION("fallback rounds") {
-    settings.sequential_fallback_rounds = -1;
-    field = "sequential_fallback_rounds";
-  }
-  SECTION("focal weight") {
-    settings.conflict_focal_weight = 0.9;
-    field = "conflict_focal_weight";
-  }
-  SECTION("conflict nodes") {
-    settings.conflict_nodes = 0;
-    field = "conflict_nodes";
-  }
-  SECTION("conflict nodes along time") {
-    settings.conflict_nodes_along_time = 0;
-    field = "conflict_nodes_along_time";
-  }
-  SECTION("reroutes") {
-    settings.conflict_reroutes_retry = -1;
-    field = "conflict_reroutes_retry";
-  }
-  SECTION("direct time share") {
-    settings.direct_time_share = 0.0;
-    field = "direct_time_share";
-  }
-  CHECK_THROWS_AS(solve(world, settings), std::invalid_argument);
-  CHECK_THROWS_WITH(solve(world, settings), Contains("planner settings: ") && Contains(field));
 }
 
 TEST_CASE("an object no grasp can ever place makes the problem infeasible and is named", "[planner][dash]") {
