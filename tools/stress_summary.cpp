@@ -65,10 +65,13 @@ std::string pointText(const PointSummary& p) {
   std::string failures;
   for (int c = 0; c < kFailureClassCount; ++c) {
     if (p.any[c] == 0) continue;
-    failures += " " + std::string(toString(static_cast<FailureClass>(c))) + " " + std::to_string(p.primary[c]) + "/" +
-                std::to_string(p.any[c]);
+    failures += ' ';
+    failures += toString(static_cast<FailureClass>(c));
+    failures += ' ' + std::to_string(p.primary[c]) + '/' + std::to_string(p.any[c]);
   }
-  text += "  failures (primary/any):" + (failures.empty() ? std::string(" none") : failures) + "\n";
+  text += "  failures (primary/any):";
+  text += failures.empty() ? std::string(" none") : failures;
+  text += '\n';
   return text;
 }
 

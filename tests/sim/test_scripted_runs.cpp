@@ -53,7 +53,10 @@ std::string downAt(int r, const Eigen::Vector3d& p_W) {
   const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
   REQUIRE(!solutions.empty());
   std::string q;
-  for (double v : solutions.front()) q += " " + std::to_string(v);
+  for (double v : solutions.front()) {
+    q += ' ';
+    q += std::to_string(v);
+  }
   return q;
 }
 

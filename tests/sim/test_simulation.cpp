@@ -89,8 +89,7 @@ TEST_CASE("tracking a trajectory at the UR5e's maximum joint speed", "[sim]") {
   sim::Simulation sim(world, robots);
   constexpr double kAmplitude = 0.5, kOmega = 2 * std::numbers::pi;
   core::Plan plan;
-  core::RobotTrajectory trajectory;
-  trajectory.robot = "r0";
+  core::RobotTrajectory trajectory{.robot = "r0", .joint_names = {}, .points = {}};
   const core::ArmConfig q0 = world.robots[0].home;
   for (int k = 0; k <= 200; ++k) {
     const double t = 0.01 * k;
