@@ -109,6 +109,32 @@ Eigen::VectorXd reachingConfiguration(const dashbed::core::PlacedRobot& robot, s
   }
 }
 
+/// Times `query` on each of `inputs` and prints three rows: all calls (with the CPU mean, the
+/// share found free and the narrow-phase tests per call), the free ones and the colliding ones.
+template <class Input, class Query>
+void benchQueries(CollisionChecker& checker, const std::string& name, const std::vector<Input>& inputs,
+                  Query&& query) {
+  std::vector<double> all, free, hit;
+  checker.resetCounters();
+  const double cpu_start = cpuMicroseconds();
+  for (const Input& input : inputs) {
+    bool result = false;
+    const double us = timeCall([&] { return query(input); }, result);
+    all.push_back(us);
+    (result ? free : hit).push_back(us);
+  }
+  const auto calls = static_cast<double>(inputs.size());
+  const double narrow = static_cast<double>(checker.counters().narrow_phase) / calls;
+  char note[128];
+  std::snprintf(note, sizeof note, "%.1f%% free, %.2f FCL pair tests per call",
+                100.0 * static_cast<double>(free.size()) / calls, narrow);
+  Stats stats = summarise(all);
+  stats.cpu_mean = (cpuMicroseconds() - cpu_start) / calls;
+  printRow(name + ", all", stats, note);
+  printRow(name + ", free", summarise(free));
+  printRow(name + ", colliding", summarise(hit));
+}
+
 int usage(const char* message) {
   std::fprintf(stderr, "%s\nusage: dashbed_bench_collision [WORLD.yaml] [--checks N] [--motions M] [--seed S]\n",
                message);
@@ -180,25 +206,7 @@ int main(int argc, char** argv) try {
     std::vector<Eigen::VectorXd> qs;
     qs.reserve(static_cast<std::size_t>(checks));
     for (int i = 0; i < checks; ++i) qs.push_back(randomConfiguration(*robots[0].model, rng));
-    std::vector<double> all, free, hit;
-    checker.resetCounters();
-    const double cpu_start = cpuMicroseconds();
-    for (const auto& q : qs) {
-      bool result = false;
-      const double us = timeCall([&] { return checker.robotFree(0, q, objects, held); }, result);
-      all.push_back(us);
-      (result ? free : hit).push_back(us);
-    }
-    const double cpu_per_call = (cpuMicroseconds() - cpu_start) / checks;
-    const double narrow = static_cast<double>(checker.counters().narrow_phase) / checks;
-    char note[128];
-    std::snprintf(note, sizeof note, "%.1f%% free, %.2f FCL pair tests per call",
-                  100.0 * static_cast<double>(free.size()) / checks, narrow);
-    Stats stats = summarise(all);
-    stats.cpu_mean = cpu_per_call;
-    printRow(name + ", all", stats, note);
-    printRow(name + ", free", summarise(free));
-    printRow(name + ", colliding", summarise(hit));
+    benchQueries(checker, name, qs, [&](const Eigen::VectorXd& q) { return checker.robotFree(0, q, objects, held); });
   };
   robotBench("robotFree (uniform in limits)", std::nullopt);
   if (!world.objects.empty()) {
@@ -214,26 +222,9 @@ int main(int argc, char** argv) try {
         qs.emplace_back(reaching ? reachingConfiguration(robots[0], rng) : randomConfiguration(*robots[0].model, rng),
                         reaching ? reachingConfiguration(robots[1], rng) : randomConfiguration(*robots[1].model, rng));
       }
-      std::vector<double> all, free, hit;
-      checker.resetCounters();
-      const double cpu_start = cpuMicroseconds();
-      for (const auto& [q0, q1] : qs) {
-        bool result = false;
-        const double us =
-            timeCall([&] { return checker.robotsFree(0, q0, std::nullopt, 1, q1, std::nullopt); }, result);
-        all.push_back(us);
-        (result ? free : hit).push_back(us);
-      }
-      const double cpu_per_call = (cpuMicroseconds() - cpu_start) / checks;
-      const double narrow = static_cast<double>(checker.counters().narrow_phase) / checks;
-      char note[128];
-      std::snprintf(note, sizeof note, "%.1f%% free, %.2f FCL pair tests per call",
-                    100.0 * static_cast<double>(free.size()) / checks, narrow);
-      Stats stats = summarise(all);
-      stats.cpu_mean = cpu_per_call;
-      printRow(name + ", all", stats, note);
-      printRow(name + ", free", summarise(free));
-      printRow(name + ", colliding", summarise(hit));
+      benchQueries(checker, name, qs, [&](const auto& pair) {
+        return checker.robotsFree(0, pair.first, std::nullopt, 1, pair.second, std::nullopt);
+      });
     };
     pairBench("robotsFree (uniform in limits)", false);
     pairBench("robotsFree (both reaching over centre)", true);

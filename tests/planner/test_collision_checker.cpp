@@ -19,6 +19,7 @@
 #include "core/kinematics.h"
 #include "core/world_loader.h"
 #include "planner/collision_checker.h"
+#include "tests/planner/sorting_scene.h"
 
 using namespace dashbed;
 using core::Pose;
@@ -29,19 +30,10 @@ using planner::CollisionScene;
 using planner::CollisionSettings;
 using planner::HeldObject;
 using planner::RestingObject;
+using planner::testing::sortingScene;
+using planner::testing::sortingWorld;
 
 namespace {
-
-const core::LoadedWorld& sortingWorld() {
-  static const core::LoadedWorld loaded =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/default.yaml");
-  return loaded;
-}
-
-const CollisionScene& sortingScene() {
-  static const CollisionScene scene(*sortingWorld().world, *sortingWorld().robots);
-  return scene;
-}
 
 VectorXd fullQ(const core::ArmConfig& arm, double finger) {
   VectorXd q(8);

@@ -13,6 +13,7 @@
 #include "planner/collision_checker.h"
 #include "planner/object_sites.h"
 #include "planner/roadmap.h"
+#include "tests/planner/sorting_scene.h"
 
 using namespace dashbed;
 using core::ArmConfig;
@@ -26,19 +27,10 @@ using planner::ObjectSites;
 using planner::RestingObject;
 using planner::Roadmap;
 using planner::SiteSet;
+using planner::testing::sortingScene;
+using planner::testing::sortingWorld;
 
 namespace {
-
-const core::LoadedWorld& sortingWorld() {
-  static const core::LoadedWorld loaded =
-      core::loadWorld(std::string(DASHBED_SOURCE_ROOT) + "/worlds/default.yaml");
-  return loaded;
-}
-
-const CollisionScene& sortingScene() {
-  static const CollisionScene scene(*sortingWorld().world, *sortingWorld().robots);
-  return scene;
-}
 
 const ObjectSites& sortingSites() {
   static const ObjectSites sites = planner::objectSites(sortingWorld());
