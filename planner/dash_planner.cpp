@@ -310,8 +310,9 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (!(settings.conflict_focal_weight >= 1.0)) {
     throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
   }
-  if (settings.conflict_nodes < 1 || settings.conflict_nodes_along_time < 1) {
-    throw std::invalid_argument("planner settings: conflict_nodes, conflict_nodes_along_time: must be >= 1");
+  if (settings.conflict_nodes < 1 || settings.conflict_nodes_along_time < 1 || settings.conflict_nodes_depth_first < 1) {
+    throw std::invalid_argument(
+        "planner settings: conflict_nodes, conflict_nodes_along_time, conflict_nodes_depth_first: must be >= 1");
   }
   if (settings.conflict_reroutes < 0 || settings.conflict_reroutes_retry < 0) {
     throw std::invalid_argument("planner settings: conflict_reroutes, conflict_reroutes_retry: must be >= 0");
@@ -431,6 +432,7 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
       weighted.makespan_below = best;
       weighted.order = order;
       if (order == NodeOrder::kAlongTime) weighted.max_nodes = settings.conflict_nodes_along_time;
+      if (order == NodeOrder::kDepthFirst) weighted.max_nodes = settings.conflict_nodes_depth_first;
     }
     ConflictResult resolved;
     stats.conflict_seconds += secondsBeyondConstruction(*graph, [&] {
@@ -571,13 +573,15 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
                        [](const TransitionHistory& a, const TransitionHistory& b) { return a.makespan() < b.makespan(); });
       failed_direct.resize(std::min<std::size_t>(failed_direct.size(), kSecondTries));
       say("conflict resolution again for the round's " + std::to_string(failed_direct.size()) + " shortest failed direct task plans, up to " +
-          std::to_string(settings.conflict_reroutes_retry) + " detours and parkings, best first, then depth first along time");
+          std::to_string(settings.conflict_reroutes_retry) + " detours and parkings, best first, then along time, the shortest also depth first");
       // any schedule shorter than the fallback's will do: where best first runs out of nodes
-      // (robots meeting again and again, each meeting ordered both ways), depth first along time
-      // most often finds one in a few dozen (NodeOrder::kAlongTime)
+      // (robots meeting again and again, each meeting ordered both ways), along time most often
+      // finds one in a few dozen (NodeOrder::kAlongTime); where the robots crowd so that it
+      // goes back and forth between orders, depth first gets through, to a longer schedule
       for (const TransitionHistory& history : failed_direct) {
-        for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime}) {
+        for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime, NodeOrder::kDepthFirst}) {
           if (direct_plan() || time_up()) break;
+          if (order == NodeOrder::kDepthFirst && &history != &failed_direct.front()) break;
           resolve(history, settings.conflict_focal_weight, true, order);
         }
       }

@@ -69,6 +69,10 @@ struct PlannerSettings {
   /// the sequential plan of 259 s was returned; with 2000 round 2 resolves one in 958 nodes,
   /// 172 s)
   int conflict_nodes_along_time = 2000;
+  /// per conflict resolution of the second try's depth-first pass (NodeOrder::kDepthFirst), on
+  /// the shortest of the round's failed direct task plans once best first and along time
+  /// failed on it (see conflict_reroutes_retry)
+  int conflict_nodes_depth_first = 4000;
   /// The focal weight (ConflictResolutionBudget::focal_weight, >= 1) of the conflict
   /// resolution of the greedy queries' task plans (Greedy's, and MM-DaSH's until it has
   /// Greedy's plan); Next-Best Search's are resolved best first (1: the shortest first).
@@ -82,8 +86,9 @@ struct PlannerSettings {
   /// of a round's direct task plans resolves, the three of them with the shortest optimistic
   /// makespans are resolved again with this many reroutes, for a schedule shorter than the
   /// fallback's (no constraints fed back; not above conflict_reroutes: no second try):
-  /// each best first and, where that fails, depth first along time (NodeOrder::kAlongTime,
-  /// with conflict_nodes_along_time nodes).
+  /// each best first and, where that fails, along time (NodeOrder::kAlongTime, with
+  /// conflict_nodes_along_time nodes), the shortest then also depth first
+  /// (conflict_nodes_depth_first) before the next is tried.
   /// Not before: a plan resolved with many reroutes may be longer than the sequential one.
   int conflict_reroutes_retry = 96;
   int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search

@@ -679,14 +679,21 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     Schedule schedule;
     std::uint64_t order = 0;
     double clear_until = 0.0;  ///< [s] no conflict before this time
+    double resolves = 0.0;     ///< [s] when the conflict it was made to resolve (its parent's first) happens
     std::optional<PairKnowledge> known;  ///< per robot pair, intervals known free
     std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
   };
   // which open node comes next: along time, the one free of conflicts for longest (ties: the
-  // shortest); by makespan the same, among those at most focal_weight times the shortest
-  const auto deeper = [](const Node& x, const Node& y) {
-    return std::make_tuple(-x.clear_until, x.schedule.makespan, x.constraints(), x.order) <
-           std::make_tuple(-y.clear_until, y.schedule.makespan, y.constraints(), y.order);
+  // shortest); by makespan the same, among those at most focal_weight times the shortest; depth
+  // first, the one made to resolve the latest conflict, so that the children of the node that
+  // got furthest come first (ties as along time)
+  const bool depth_first = budget.order == NodeOrder::kDepthFirst;
+  const auto deeper = [depth_first](const Node& x, const Node& y) {
+    const auto key = [&](const Node& n) {
+      return std::make_tuple(depth_first ? -n.resolves : 0.0, -n.clear_until, n.schedule.makespan, n.constraints(),
+                             n.order);
+    };
+    return key(x) < key(y);
   };
   std::vector<Node> open;
   const auto take_next = [&]() {
@@ -720,7 +727,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.segments = std::move(segments);
     schedule.start = std::move(*start);
     schedule.makespan = makespanOf(schedule);
-    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created++, 0.0, std::nullopt};
+    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created++, 0.0, 0.0, std::nullopt};
   };
   // Reroutes already tried, by kind (detour or parking), move and states to keep clear of (in
   // any order): the same conflict comes back in many nodes, and asked again a reroute takes the
@@ -856,6 +863,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       if (budget.makespan_below && child.schedule.makespan >= *budget.makespan_below) return false;
       const std::vector<double> differ = firstDifferences(node.schedule, child.schedule, robots);
       child.clear_until = std::min(conflict->t, *std::min_element(differ.begin(), differ.end()));
+      child.resolves = conflict->t;
       // per robot pair: what this node found free, as long as both robots do the same
       PairKnowledge known{checked, std::vector<double>(checked.size(), 0.0)};
       for (int a = 0; a < robots; ++a) {

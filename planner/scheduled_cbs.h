@@ -104,10 +104,17 @@ enum class NodeOrder {
   /// best first: the shortest schedule first, or any within focal_weight of it that is free of
   /// conflicts for longer
   kMakespan,
-  /// depth first along time: the node free of conflicts for longest first (ties: the shortest);
-  /// finds a schedule in fewer nodes where any below a bound will do (crowded sequential plans
+  /// along time: the node free of conflicts for longest first (ties: the shortest); finds a
+  /// schedule in fewer nodes where any below a bound will do (crowded sequential plans
   /// overlapping), not the shortest
   kAlongTime,
+  /// depth first: the node made to resolve the latest conflict first, that is the children of
+  /// the node that got furthest along its schedule, backtracking to the deepest open node (ties
+  /// as kAlongTime). A node's conflict-free prefix ends where its schedule first differs from
+  /// its parent's, often well before the conflict it resolves, so along time goes back and
+  /// forth between siblings; depth first commits, and gets through schedules whose robots meet
+  /// again and again, with longer schedules where both find one.
+  kDepthFirst,
 };
 
 struct ConflictResolutionBudget {

@@ -152,6 +152,7 @@ TEST_CASE("planner settings out of range are refused before any planning and nam
       {"conflict_focal_weight", [](PlannerSettings& s) { s.conflict_focal_weight = 0.9; }},
       {"conflict_nodes", [](PlannerSettings& s) { s.conflict_nodes = 0; }},
       {"conflict_nodes_along_time", [](PlannerSettings& s) { s.conflict_nodes_along_time = 0; }},
+      {"conflict_nodes_depth_first", [](PlannerSettings& s) { s.conflict_nodes_depth_first = 0; }},
       {"conflict_reroutes_retry", [](PlannerSettings& s) { s.conflict_reroutes_retry = -1; }},
       {"direct_time_share", [](PlannerSettings& s) { s.direct_time_share = 0.0; }},
   };

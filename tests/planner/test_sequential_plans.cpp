@@ -143,7 +143,7 @@ TEST_CASE("conflict resolution may overlap the steps of a sequential task plan, 
   const auto [history, one_after_another] = resolvedSequential(g);
   ConflictResolutionBudget budget = conflictBudget();
   budget.makespan_below = one_after_another.makespan;
-  budget.order = GENERATE(NodeOrder::kMakespan, NodeOrder::kAlongTime);
+  budget.order = GENERATE(NodeOrder::kMakespan, NodeOrder::kAlongTime, NodeOrder::kDepthFirst);
   INFO("node order " << static_cast<int>(budget.order));
   const ConflictResult overlapping = resolveConflicts(g.graph, history, budget, SequentialSteps::kOverlapping);
   REQUIRE(overlapping.status == ConflictStatus::kResolved);
