@@ -310,7 +310,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   if (!(settings.conflict_focal_weight >= 1.0)) {
     throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
   }
-  if (settings.conflict_nodes < 1 || settings.conflict_nodes_along_time < 1 || settings.conflict_nodes_depth_first < 1) {
+  if (settings.conflict_nodes < 1 || settings.conflict_nodes_along_time < 1 ||
+      settings.conflict_nodes_depth_first < 1) {
     throw std::invalid_argument(
         "planner settings: conflict_nodes, conflict_nodes_along_time, conflict_nodes_depth_first: must be >= 1");
   }
@@ -573,16 +574,16 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
                        [](const TransitionHistory& a, const TransitionHistory& b) { return a.makespan() < b.makespan(); });
       failed_direct.resize(std::min<std::size_t>(failed_direct.size(), kSecondTries));
       say("conflict resolution again for the round's " + std::to_string(failed_direct.size()) + " shortest failed direct task plans, up to " +
-          std::to_string(settings.conflict_reroutes_retry) + " detours and parkings, best first, then along time, the shortest also depth first");
+          std::to_string(settings.conflict_reroutes_retry) +
+          " detours and parkings, best first, then along time, the shortest also depth first");
       // any schedule shorter than the fallback's will do: where best first runs out of nodes
       // (robots meeting again and again, each meeting ordered both ways), along time most often
       // finds one in a few dozen (NodeOrder::kAlongTime); where the robots crowd so that it
       // goes back and forth between orders, depth first gets through, to a longer schedule
-      for (const TransitionHistory& history : failed_direct) {
+      for (std::size_t i = 0; i < failed_direct.size(); ++i) {
         for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime, NodeOrder::kDepthFirst}) {
-          if (direct_plan() || time_up()) break;
-          if (order == NodeOrder::kDepthFirst && &history != &failed_direct.front()) break;
-          resolve(history, settings.conflict_focal_weight, true, order);
+          if (direct_plan() || time_up() || (order == NodeOrder::kDepthFirst && i > 0)) break;
+          resolve(failed_direct[i], settings.conflict_focal_weight, true, order);
         }
       }
     }

@@ -727,7 +727,8 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.segments = std::move(segments);
     schedule.start = std::move(*start);
     schedule.makespan = makespanOf(schedule);
-    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created++, 0.0, 0.0, std::nullopt};
+    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created++, 0.0, 0.0,
+                std::nullopt};
   };
   // Reroutes already tried, by kind (detour or parking), move and states to keep clear of (in
   // any order): the same conflict comes back in many nodes, and asked again a reroute takes the
