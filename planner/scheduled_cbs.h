@@ -39,15 +39,16 @@
 // larger of the two robots' CollisionScene::motionSteps times its peak over mean speed there:
 // 1 while cruising, up to 2 on a move's ramp from or to rest, up to 3 between keys, where
 // each joint is monotone). Samples, and whole intervals, within the clearance of the last
-// sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. At the
-// earliest conflict, between item A of robot a and item B of robot b (an item is a segment, or
-// the robot standing still between two segments), the node branches into "A ends before B
-// starts" and "B ends before A starts" — each a precedence (hyperarc-hyperarc or
-// vertex-hyperarc scheduling constraint) on the segment starts. When neither order can hold (a
-// cycle with the schedule's own precedences), the low level changes a robot's route on its
-// roadmap instead (at most max_reroutes roadmap searches per call, and as many again below a
-// folded robot, see below; a reroute asked again, the same move around the same states, in
-// another node gets the answer found before):
+// sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. The robot
+// pairs are checked side by side along time (a second at a time), so that none is checked much
+// beyond the earliest conflict. At the earliest conflict, between item A of robot a and item B
+// of robot b (an item is a segment, or the robot standing still between two segments), the
+// node branches into "A ends before B starts" and "B ends before A starts" — each a precedence
+// (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. When
+// neither order can hold (a cycle with the schedule's own precedences), the low level changes
+// a robot's route on its roadmap instead (at most max_reroutes roadmap searches per call, and
+// as many again below a folded robot, see below; a reroute asked again, the same move around
+// the same states, in another node gets the answer found before):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
