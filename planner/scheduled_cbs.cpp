@@ -463,7 +463,10 @@ class PairCheck {
   PairCheck(const ScheduleView& view, const Schedule& schedule, const CollisionScene& scene, CollisionChecker& checker,
             int a, int b, KnownFree&& known_free)
       : view_(&view), schedule_(&schedule), scene_(&scene), checker_(&checker), a_(a), b_(b), known_free_(known_free) {
-    if (known_free_(toSeconds(schedule.makespan))) return;
+    if (known_free_(toSeconds(schedule.makespan))) {
+      start_ = schedule.makespan;
+      return;
+    }
     // the grid starts at its last regular time up to which all is known free: the intervals
     // before it end by then
     Millis lo = 0, hi = schedule.makespan / kGridStep;  // known free up to lo's time (t1 = 0 is)
@@ -476,51 +479,56 @@ class PairCheck {
       }
     }
     const Millis begin = lo * kGridStep;
-    // three sorted lists merged: a robot's segments run one after another
-    std::array<std::vector<Millis>, 3> lists;
+    // the two robots' point times from there on (a robot's segments run one after another);
+    // the regular grid's times come in as the intervals are walked
+    std::array<std::vector<Millis>, 2> lists;
     for (const int r : {a, b}) {
       std::vector<Millis>& times = lists[r == a ? 0 : 1];
       const Timeline& line = view.timeline(r);
       for (std::size_t k = 0; k < line.segments.size(); ++k) {
         for (const Millis t : line.times[k]) {
-          if (schedule.start[line.segments[k]] + t >= begin) times.push_back(schedule.start[line.segments[k]] + t);
+          if (schedule.start[line.segments[k]] + t > begin) times.push_back(schedule.start[line.segments[k]] + t);
         }
       }
       if (!std::is_sorted(times.begin(), times.end())) std::sort(times.begin(), times.end());
     }
-    for (Millis t = begin; t <= schedule.makespan; t += kGridStep) lists[2].push_back(t);
-    lists[2].push_back(schedule.makespan);
-    std::vector<Millis> ab;
-    ab.reserve(lists[0].size() + lists[1].size());
-    std::merge(lists[0].begin(), lists[0].end(), lists[1].begin(), lists[1].end(), std::back_inserter(ab));
-    grid_.reserve(ab.size() + lists[2].size());
-    std::merge(ab.begin(), ab.end(), lists[2].begin(), lists[2].end(), std::back_inserter(grid_));
-    grid_.erase(std::unique(grid_.begin(), grid_.end()), grid_.end());
+    points_.reserve(lists[0].size() + lists[1].size());
+    std::merge(lists[0].begin(), lists[0].end(), lists[1].begin(), lists[1].end(), std::back_inserter(points_));
+    start_ = begin;
   }
 
   /// Checks the next intervals that start before `until` and no later than `latest` [s]. The
   /// pair's first conflict when one of them has it (the pair is then done).
   std::optional<RobotConflict> advance(double until, double latest) {
-    for (; next_ + 1 < grid_.size(); ++next_) {
-      const double t0 = toSeconds(grid_[next_]);
+    for (; !done(); start_ = nextTime()) {
+      const double t0 = toSeconds(start_);
       if (t0 >= until) return std::nullopt;
-      if (t0 > latest) break;
-      if (std::optional<RobotConflict> conflict = check(t0, toSeconds(grid_[next_ + 1]))) {
+      if (t0 > latest) {
         checked_ = t0;
-        next_ = grid_.size();
+        break;
+      }
+      if (std::optional<RobotConflict> conflict = check(t0, toSeconds(nextTime()))) {
+        checked_ = t0;
+        start_ = schedule_->makespan;
         return conflict;
       }
     }
-    if (next_ + 1 < grid_.size()) checked_ = toSeconds(grid_[next_]);
-    next_ = grid_.size();
+    start_ = schedule_->makespan;
     return std::nullopt;
   }
 
-  bool done() const { return next_ + 1 >= grid_.size(); }
+  bool done() const { return start_ >= schedule_->makespan; }
   /// [s] The start of the first interval not found free (when not done: the next one).
-  double checkedUntil() const { return done() ? checked_ : toSeconds(grid_[next_]); }
+  double checkedUntil() const { return done() ? checked_ : toSeconds(start_); }
 
  private:
+  /// The check time after start_: the next point time of either robot or of the grid.
+  Millis nextTime() {
+    while (point_ < points_.size() && points_[point_] <= start_) ++point_;
+    const Millis grid = (start_ / kGridStep + 1) * kGridStep;
+    return std::min({grid, schedule_->makespan, point_ < points_.size() ? points_[point_] : grid});
+  }
+
   /// The first colliding sample in [t0, t1], or none.
   std::optional<RobotConflict> check(double t0, double t1) {
     if (known_free_(t1)) return std::nullopt;
@@ -635,8 +643,9 @@ class PairCheck {
   CollisionChecker* checker_;
   int a_, b_;
   std::function<bool(double)> known_free_;
-  std::vector<Millis> grid_;
-  std::size_t next_ = 0;  ///< the next interval: [grid_[next_], grid_[next_ + 1]]
+  std::vector<Millis> points_;  ///< both robots' point times after the first check time, sorted
+  std::size_t point_ = 0;       ///< the first of points_ after start_ (or before)
+  Millis start_ = 0;            ///< the next interval's start
   double checked_ = std::numeric_limits<double>::infinity();
   /// both robots standing as they stood in the last interval checked: nothing new to check
   std::optional<std::pair<RobotState, RobotState>> standing_;
@@ -657,9 +666,9 @@ class PairCheck {
 /// start of the first interval not checked or colliding; infinity when all were free).
 /// The pairs are checked side by side along time, kCheckWindow at a time, so that none is
 /// checked far beyond the earliest conflict; of two at the same time, the first pair's counts.
-std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, const Schedule& schedule, double from,
-                                                const PairKnowledge* known, std::vector<double>* checked) {
-  const ScheduleView view(graph, schedule);
+std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, const ScheduleView& view,
+                                                const Schedule& schedule, double from, const PairKnowledge* known,
+                                                std::vector<double>* checked) {
   CollisionChecker checker(graph.scene());
   const std::size_t robots = graph.world().world->robots.size();
   std::vector<PairCheck> pairs;
@@ -737,7 +746,7 @@ std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int r
 }  // namespace
 
 std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from) {
-  return firstConflictPairs(graph, schedule, from, nullptr, nullptr);
+  return firstConflictPairs(graph, ScheduleView(graph, schedule), schedule, from, nullptr, nullptr);
 }
 
 core::ArmConfig scheduledArm(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {
@@ -930,9 +939,10 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     }
     Node node = take_next();
     ++result.nodes;
+    const ScheduleView view(graph, node.schedule);
     std::vector<double> checked;
     const std::optional<RobotConflict> conflict =
-        firstConflictPairs(graph, node.schedule, node.clear_until, node.known ? &*node.known : nullptr, &checked);
+        firstConflictPairs(graph, view, node.schedule, node.clear_until, node.known ? &*node.known : nullptr, &checked);
     if (!conflict) {
       result.status = ConflictStatus::kResolved;
       result.constraints = static_cast<int>(node.constraints());
@@ -940,7 +950,6 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       return result;
     }
     result.reason = describe(graph, *conflict);
-    const ScheduleView view(graph, node.schedule);
     const int ra = conflict->robot_a, rb = conflict->robot_b;
     // a child repeats this schedule, free before the conflict, until their first difference
     const auto push = [&](Node child) {
