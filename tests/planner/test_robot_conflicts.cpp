@@ -1,6 +1,6 @@
 // The robot-robot check of conflict resolution (firstConflict): which item of each robot a
-// conflict at an exact instant belongs to, on a schedule written by hand; and that it checks
-// the robots where the written plan takes them.
+// conflict at an exact instant belongs to, and which pair's conflict comes first, on schedules
+// written by hand; and that it checks the robots where the written plan takes them.
 #include <catch2/catch.hpp>
 
 #include <array>
@@ -132,4 +132,80 @@ TEST_CASE("conflict resolution checks the robots where the written plan's interp
     }
   }
   CHECK(transitions >= 4);  // transitions with keys between their ends, where cubic and line differ
+}
+
+TEST_CASE("the earliest conflict of any robot pair is found, whichever pair comes first in order",
+          "[planner][dash]") {
+  // three robots: r0 and r1 face each other across the table, r2 stands between them at its side
+  const core::LoadedWorld world = core::loadWorld(worldPath("sort_3r_6c_side.yaml"));
+  REQUIRE(world.world->robots.size() == 3);
+  const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
+  const MotionHypergraph graph(world, task_space, 7);
+  const CollisionScene& scene = graph.scene();
+  CollisionChecker checker(scene);
+  const auto free = [&](int ra, const core::ArmConfig& qa, int rb, const core::ArmConfig& qb) {
+    return checker.robotsFree(ra, scene.configuration(ra, qa, kFingersOpen), std::nullopt, rb,
+                              scene.configuration(rb, qb, kFingersOpen), std::nullopt);
+  };
+  const auto home = [&](int r) { return world.world->robots[static_cast<std::size_t>(r)].home; };
+  for (int ra = 0; ra < 3; ++ra) {
+    for (int rb = ra + 1; rb < 3; ++rb) REQUIRE(free(ra, home(ra), rb, home(rb)));
+  }
+  // r2 reaching out into r1 standing at home, clear of r0 at home; r0 reaching out into r1 at
+  // home (r1 and r2 are the last pair in order, r0 and r1 the first)
+  std::vector<core::ArmConfig> reaching;
+  for (int k = 0; k < 16; ++k) {
+    for (const double shoulder : {-0.35, -0.9}) {
+      reaching.push_back({-3.141592653589793 + k * 3.141592653589793 / 8, shoulder, 0.35, -1.5708, -1.5708, 0.0});
+    }
+  }
+  std::optional<core::ArmConfig> q2, q0;
+  for (const core::ArmConfig& q : reaching) {
+    if (!q2 && !free(1, home(1), 2, q) && free(0, home(0), 2, q)) q2 = q;
+    if (!q0 && !free(0, q, 1, home(1))) q0 = q;
+  }
+  REQUIRE(q2);
+  REQUIRE(q0);
+
+  // each robot jumps to where it reaches out (a one-configuration move: no plan makes such a
+  // jump, so that a pair first collides at exactly its start) and stays there
+  std::vector<Move> moves(2);
+  moves[0].robot = 2;
+  moves[0].path = {*q2};
+  moves[1].robot = 0;
+  moves[1].path = {*q0};
+  const auto segment = [&](const Move& move, Millis duration) {
+    ScheduleSegment seg;
+    seg.robot = move.robot;
+    seg.move = &move;
+    seg.duration = duration;
+    seg.finger = kFingersOpen;
+    return seg;
+  };
+  Schedule schedule;
+  schedule.segments = {segment(moves[1], 1000), segment(moves[0], 2000)};
+  schedule.makespan = 4000;
+
+  SECTION("the last pair in order first") {
+    schedule.start = {3000, 1000};  // r0 out at 3 s, r2 at 1 s
+    const std::optional<RobotConflict> conflict = firstConflict(graph, schedule);
+    REQUIRE(conflict);
+    CHECK(conflict->t == 1.0);
+    CHECK(conflict->robot_a == 1);
+    CHECK(conflict->robot_b == 2);
+    // checked from a later time on (a search node free before then): r2 still stands in r1
+    const std::optional<RobotConflict> later = firstConflict(graph, schedule, 1.5);
+    REQUIRE(later);
+    CHECK(later->t == 1.5);
+    CHECK(later->robot_a == 1);
+    CHECK(later->robot_b == 2);
+  }
+  SECTION("two pairs at the same instant: the first in order") {
+    schedule.start = {2000, 2000};
+    const std::optional<RobotConflict> conflict = firstConflict(graph, schedule);
+    REQUIRE(conflict);
+    CHECK(conflict->t == 2.0);
+    CHECK(conflict->robot_a == 0);
+    CHECK(conflict->robot_b == 1);
+  }
 }
