@@ -177,6 +177,8 @@ double segmentDistance(const Vector3d& p1, const Vector3d& d1, const Vector3d& p
 
 // A sample skipped by its clearance (motionClearOf) keeps this much of it in hand [m]: rounding.
 constexpr double kClearanceSlack = 1e-4;
+// [m] capsules farther apart than this hold shapes that are apart (a margin for rounding)
+constexpr double kCapsulesApart = 1e-6;
 // motionClearOf measures robotsClearance while it skips at least this many samples
 constexpr double kWorthMeasuring = 8.0;
 
@@ -265,9 +267,14 @@ double boxesGap(const std::pair<Eigen::Vector3d, Eigen::Vector3d>& a, const std:
 double CollisionChecker::robotsClearance(int robot_a, const Eigen::VectorXd& q_a,
                                          const std::optional<HeldObject>& held_a, int robot_b,
                                          const Eigen::VectorXd& q_b, const std::optional<HeldObject>& held_b) {
-  if (!robotsFree(robot_a, q_a, held_a, robot_b, q_b, held_b)) return -1.0;
-  return slotsClearance(*state_, state_->slots[robot_a], state_->slots[robot_b],
-                        std::numeric_limits<double>::infinity());
+  placePair(robot_a, q_a, held_a, robot_b, q_b, held_b);
+  auto& slot_a = state_->slots[robot_a];
+  auto& slot_b = state_->slots[robot_b];
+  // the capsules hold the shapes: robots whose capsules keep apart are free, only the others
+  // are checked shape against shape
+  const double clearance = slotsClearance(*state_, slot_a, slot_b, std::numeric_limits<double>::infinity());
+  if (clearance > kCapsulesApart) return clearance;
+  return state_->interRobotHit(slot_a, slot_b) ? -1.0 : clearance;
 }
 
 std::pair<int, double> CollisionChecker::motionSamples(int robot, const detail::MotionRef& motion,

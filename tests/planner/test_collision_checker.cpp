@@ -548,6 +548,7 @@ TEST_CASE("robotsClearance: the robots stay free while they travel less than it"
   int positive = 0;
   int mismatches = 0;
   int violations = 0;
+  int colliding = 0, overlapping = 0;
   for (int i = 0; i < 3000; ++i) {
     const VectorXd q0 = random.towardsCentre((*loaded.robots)[0]);
     const VectorXd q1 = random.towardsCentre((*loaded.robots)[1]);
@@ -555,6 +556,10 @@ TEST_CASE("robotsClearance: the robots stay free while they travel less than it"
     const auto held1 = random.held(world, 0.4);
     const double clearance = dut.robotsClearance(0, q0, held0, 1, q1, held1);
     if ((clearance >= 0.0) != check.robotsFree(0, q0, held0, 1, q1, held1)) ++mismatches;
+    // colliding, and free with the capsules around their shapes overlapping (checked shape
+    // against shape)
+    colliding += clearance < 0.0 ? 1 : 0;
+    overlapping += clearance == 0.0 ? 1 : 0;
     if (clearance <= 1e-3) continue;
     ++positive;
     // move both arms straight in random directions, together just under the clearance
@@ -572,6 +577,8 @@ TEST_CASE("robotsClearance: the robots stay free while they travel less than it"
   CHECK(mismatches == 0);
   CHECK(violations == 0);
   CHECK(positive > 100);
+  CHECK(colliding > 100);
+  CHECK(overlapping > 40);
 }
 
 TEST_CASE("motionClearOf, which skips samples within its clearance, agrees with motionsFree on random motions",
