@@ -452,16 +452,24 @@ struct PairKnowledge {
   std::vector<double> same;     ///< [s] the two robots do the same as there before then
 };
 
+/// Whether an interval of robot pair `pair` ending at t1 [s] is known free: before `from`, or
+/// where `known` (may be null) says so (true for all t1 up to some time, false after it).
+struct KnownFree {
+  double from = 0.0;
+  const PairKnowledge* known = nullptr;
+  std::size_t pair = 0;
+  bool operator()(double t1) const {
+    return t1 <= from || (known != nullptr && t1 <= known->checked[pair] && t1 < known->same[pair]);
+  }
+};
+
 /// One robot pair's part of firstConflictPairs: the intervals between its check times (every
 /// point time of both robots and a regular grid), checked in order from the first one not known
 /// free, as far as the caller asks at a time.
 class PairCheck {
  public:
-  /// `known_free(t1)`: the interval ending at t1 [s] is known free (true for all t1 up to some
-  /// time, false after it).
-  template <class KnownFree>
   PairCheck(const ScheduleView& view, const Schedule& schedule, const CollisionScene& scene, CollisionChecker& checker,
-            int a, int b, KnownFree&& known_free)
+            int a, int b, KnownFree known_free)
       : view_(&view), schedule_(&schedule), scene_(&scene), checker_(&checker), a_(a), b_(b), known_free_(known_free) {
     if (known_free_(toSeconds(schedule.makespan))) {
       start_ = schedule.makespan;
@@ -642,7 +650,7 @@ class PairCheck {
   const CollisionScene* scene_;
   CollisionChecker* checker_;
   int a_, b_;
-  std::function<bool(double)> known_free_;
+  KnownFree known_free_;
   std::vector<Millis> points_;  ///< both robots' point times after the first check time, sorted
   std::size_t point_ = 0;       ///< the first of points_ after start_ (or before)
   Millis start_ = 0;            ///< the next interval's start
@@ -679,11 +687,8 @@ std::optional<RobotConflict> firstConflictPairs(const MotionHypergraph& graph, c
       const auto& spec_b = graph.world().world->robots[rb];
       if ((spec_a.X_WBase.translation() - spec_b.X_WBase.translation()).norm() > kFarApart) continue;
       const std::size_t pair = ra * robots + rb;
-      const auto known_free = [from, known, pair](double t1) {
-        return t1 <= from || (known != nullptr && t1 <= known->checked[pair] && t1 < known->same[pair]);
-      };
       pairs.emplace_back(view, schedule, graph.scene(), checker, static_cast<int>(ra), static_cast<int>(rb),
-                         known_free);
+                         KnownFree{from, known, pair});
       index.push_back(pair);
     }
   }
