@@ -24,31 +24,19 @@
 // The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
 // constraints cannot all hold).
 //
-// High level: best-first over constraint sets by makespan, as a focal search (ECBS's high
-// level): of the open nodes at most focal_weight times as long as the shortest, the one free of
-// conflicts for longest (ties: shorter, fewer constraints, created first); with focal_weight 1
-// the shortest first, of equally short ones the one free for longest. Or depth first along
-// time (NodeOrder). With a bound (makespan_below) nodes not shorter than it are dropped. A
-// node's schedule is checked robot against robot,
-// continuously in time: both robots' exact configurations — a move on its time-optimal
-// profile, a transition on the cubic through its keys that the simulator's interpolator
-// follows (controllers::TrajectoryInterpolator, at rest at the first and last key) — at a grid
-// of times fine enough that no point of either robot (held object included) moves more than
-// the collision scene's motion_step between two checks, so the margin covers the motion in
-// between (times of every segment and key, plus a 20 ms grid, each interval split into the
-// larger of the two robots' CollisionScene::motionSteps times its peak over mean speed there:
-// 1 while cruising, up to 2 on a move's ramp from or to rest, up to 3 between keys, where
-// each joint is monotone). Samples, and whole intervals, within the clearance of the last
-// sample measured (CollisionChecker::robotsClearance) are free and are not evaluated. The robot
-// pairs are checked side by side along time (a second at a time), so that none is checked much
-// beyond the earliest conflict. At the earliest conflict, between item A of robot a and item B
-// of robot b (an item is a segment, or the robot standing still between two segments), the
-// node branches into "A ends before B starts" and "B ends before A starts" — each a precedence
-// (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the segment starts. When
-// neither order can hold (a cycle with the schedule's own precedences), the low level changes
-// a robot's route on its roadmap instead (at most max_reroutes roadmap searches per call, and
-// as many again below a folded robot, see below; a reroute asked again, the same move around
-// the same states, in another node gets the answer found before):
+// High level: best-first over constraint sets by makespan, as a focal search (ECBS's high level):
+// of the open nodes at most focal_weight times as long as the shortest, the one free of conflicts
+// for longest (ties: shorter, fewer constraints, created first); with focal_weight 1 the shortest
+// first, of equally short ones the one free for longest. Or depth first along time (NodeOrder).
+// With a bound (makespan_below) nodes not shorter than it are dropped. A node's schedule is checked
+// robot against robot, continuously in time (robot_conflicts.h). At the earliest conflict, between
+// item A of robot a and item B of robot b (an item is a segment, or the robot standing still
+// between two segments), the node branches into "A ends before B starts" and "B ends before A
+// starts" — each a precedence (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the
+// segment starts. When neither order can hold (a cycle with the schedule's own precedences), the
+// low level changes a robot's route on its roadmap instead (at most max_reroutes roadmap searches
+// per call, and as many again below a folded robot, see below; a reroute asked again, the same move
+// around the same states, in another node gets the answer found before):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap
@@ -68,37 +56,10 @@
 #include <vector>
 
 #include "planner/motion_hypergraph.h"
+#include "planner/schedule.h"
 #include "planner/transition_history.h"
 
 namespace dashbed::planner {
-
-/// One segment of a robot's timeline.
-struct ScheduleSegment {
-  int robot = -1;
-  const Move* move = nullptr;                  ///< a move, or
-  const TransitionMotion* motion = nullptr;    ///< a robot's part of a transition
-  int step = -1;      ///< the history step it belongs to (-1: folding, the final move, unfolding)
-  /// The history step during which it runs in a sequential history: its step, except that a
-  /// robot's way to where it waits after a transition (parking, or the final move) belongs to
-  /// that transition's step; folding comes before every step (-1), unfolding after them all
-  /// (the number of steps).
-  int phase = -1;
-  Millis duration = 0;
-  std::optional<HeldObject> held;  ///< moves: the object carried
-  double finger = 0.025;           ///< moves: finger position [m]
-  /// moves into a transition: may arrive before it starts and wait in front of it (set by
-  /// conflict resolution; by default a robot arrives just in time)
-  bool early = false;
-  /// moves: a robot's way to a parking (the first part of a parked move; set by conflict
-  /// resolution, which does not park it again)
-  bool to_parking = false;
-};
-
-struct Schedule {
-  std::vector<ScheduleSegment> segments;  ///< per robot in order, robots one after another
-  std::vector<Millis> start;              ///< [segment] start time
-  Millis makespan = 0;
-};
 
 /// The order in which the high level expands its nodes.
 enum class NodeOrder {
@@ -172,22 +133,5 @@ enum class SequentialSteps {
 ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
                                 const ConflictResolutionBudget& budget,
                                 SequentialSteps steps = SequentialSteps::kOneAfterAnother);
-
-/// Checks a schedule robot against robot at the resolution described above; returns the first
-/// colliding time [s] and robots, or std::nullopt when none collide. Independent of the
-/// search: tests use it to confirm a result.
-struct RobotConflict {
-  double t = 0.0;
-  int robot_a = -1, robot_b = -1;
-  /// the robot's k-th segment (counted along that robot's timeline, not an index into
-  /// Schedule::segments), or -1 - k for standing still before its k-th segment
-  int item_a = -1, item_b = -1;
-};
-/// `from` [s]: the schedule is known to be free before it (check intervals ending after it).
-std::optional<RobotConflict> firstConflict(const MotionHypergraph& graph, const Schedule& schedule, double from = 0.0);
-
-/// The arm configuration of `robot` at time t [s] of a schedule, as firstConflict checks it (at
-/// an instant where two segments meet, the later one's).
-core::ArmConfig scheduledArm(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t);
 
 }  // namespace dashbed::planner

@@ -14,6 +14,7 @@
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
 #include "planner/hyperpath_search.h"
+#include "planner/robot_conflicts.h"
 #include "planner/scheduled_cbs.h"
 #include "tools/scenarios.h"
 #include "tests/planner/dash_test_support.h"

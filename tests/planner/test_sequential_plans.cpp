@@ -14,6 +14,7 @@
 #include "planner/home_check.h"
 #include "planner/hyperpath_search.h"
 #include "planner/plan_writer.h"
+#include "planner/robot_conflicts.h"
 #include "planner/scheduled_cbs.h"
 #include "tests/planner/dash_test_support.h"
 
