@@ -385,30 +385,37 @@ bool CollisionChecker::motionClearOf(int robot, const detail::MotionRef& motion,
     requireConfiguration(data_other, other.q, "q of a standing robot");
     requireHeld(scene, other.held);
     state.forward(state.standing[k], data_other, other.q, other.held);
+    detail::CheckerState::updateBounds(state.standing[k], other.held ? &scene.objects[other.held->object] : nullptr);
   }
   // motionsFree's samples in its order, except that after a free sample the samples to which
   // the robot's points travel less than its clearance from every standing robot are free as
   // well and are not evaluated: the same answer, most samples skipped. The clearance: the gaps
   // between the robots' bounds, then robotsClearance of those whose bounds overlap (while the
-  // clearance so far would still skip a sample, and until one skips too few to pay for itself)
+  // clearance so far would still skip a sample, and until one skips too few to pay for itself).
+  // The bounds and the capsules hold the shapes: a standing robot whose bounds or capsules keep
+  // apart is free, only the others are checked shape against shape.
   std::vector<char>& known_free = state.known_free;
   known_free.assign(static_cast<std::size_t>(n) + 1, 0);
   auto& slot = state.slots[robot];
+  const detail::ObjectData* held_data = held ? &scene.objects[held->object] : nullptr;
   bool measure = true;
   for (const int i : state.bisectionOrder(n)) {
     if (known_free[i]) continue;
     motion.at(static_cast<double>(i) / n, state.q_a);
     state.forward(slot, data, state.q_a, held);
+    detail::CheckerState::updateBounds(slot, held_data);
     double clearance = std::numeric_limits<double>::infinity();
-    for (auto& other : state.standing) {
-      if (state.interRobotHit(slot, other)) return false;
+    for (const auto& other : state.standing) {
       const double gap = boxesGap({slot.lo, slot.hi}, {other.lo, other.hi});
       if (gap > 0.0) clearance = std::min(clearance, gap);
     }
     for (auto& other : state.standing) {
-      if (clearance < step_travel + kClearanceSlack) break;  // skips nothing
       if (boxesGap({slot.lo, slot.hi}, {other.lo, other.hi}) > 0.0) continue;
-      clearance = measure ? slotsClearance(state, slot, other, clearance) : 0.0;
+      if (clearance >= step_travel + kClearanceSlack) {  // a clearance would still skip samples
+        clearance = measure ? slotsClearance(state, slot, other, clearance) : 0.0;
+        if (clearance > kCapsulesApart) continue;
+      }
+      if (state.interRobotHit(slot, other)) return false;
     }
     // robotsClearance costs more than the checks of the few samples it skips near the others:
     // measured no more in this motion
