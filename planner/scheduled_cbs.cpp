@@ -5,6 +5,7 @@
 #include <sstream>
 #include <tuple>
 
+#include "planner/planner_text.h"
 #include "planner/robot_conflicts.h"
 
 namespace dashbed::planner {
@@ -260,10 +261,31 @@ int transitionOf(const TransitionHistory& history, const Schedule& schedule, con
   return step < 0 ? -1 : history.steps[step].transition;
 }
 
-std::string describe(const MotionHypergraph& graph, const RobotConflict& c) {
+/// What a robot does on `item` of its timeline (RobotConflict's items), in words: "handoff
+/// cube_3 by r3 to r4", "on its way to pick cube_1 by r2", "waiting for place cube_1 by r2"...
+std::string describeItem(const MotionHypergraph& graph, const TransitionHistory& history, const Schedule& schedule,
+                         const Timeline& line, int item) {
+  const int k = item >= 0 ? item : -1 - item;  // its segment, or the one it waits for
+  if (k >= static_cast<int>(line.segments.size())) return "done";
+  const ScheduleSegment& seg = schedule.segments[line.segments[k]];
+  const auto transition = [&] {
+    return describeHyperarc(*graph.world().world, graph.taskSpace(),
+                            graph.transition(history.steps[seg.step].transition).sample.hyperarc);
+  };
+  if (item < 0) return k == 0 ? "at home" : seg.step >= 0 ? "waiting for " + transition() : "waiting";
+  if (seg.motion != nullptr) return transition();
+  if (seg.step >= 0) return (seg.to_parking ? "parking on its way to " : "on its way to ") + transition();
+  return seg.phase < 0 ? "folding" : seg.phase >= static_cast<int>(history.steps.size()) ? "unfolding" : "on its way to rest";
+}
+
+/// "r2 (waiting for handoff cube_10 by r5 to r2) and r3 (handoff cube_3 by r3 to r4) collide at t = 28.04 s"
+std::string describe(const MotionHypergraph& graph, const TransitionHistory& history, const ScheduleView& view,
+                     const Schedule& schedule, const RobotConflict& c) {
+  const auto robot = [&](int r, int item) {
+    return graph.world().world->robots[r].name + " (" + describeItem(graph, history, schedule, view.timeline(r), item) + ")";
+  };
   std::ostringstream out;
-  out << graph.world().world->robots[c.robot_a].name << " and " << graph.world().world->robots[c.robot_b].name
-      << " collide at t = " << c.t << " s";
+  out << robot(c.robot_a, c.item_a) << " and " << robot(c.robot_b, c.item_b) << " collide at t = " << c.t << " s";
   return out.str();
 }
 
@@ -495,7 +517,7 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       result.schedule = std::move(node.schedule);
       return result;
     }
-    result.reason = describe(graph, *conflict);
+    result.reason = describe(graph, history, view, node.schedule, *conflict);
     const int ra = conflict->robot_a, rb = conflict->robot_b;
     // a child repeats this schedule, free before the conflict, until their first difference
     const auto push = [&](Node child) {

@@ -6,6 +6,7 @@
 #include <array>
 #include <cmath>
 #include <optional>
+#include <string>
 #include <vector>
 
 #include "controllers/trajectory_interpolator.h"
@@ -209,4 +210,21 @@ TEST_CASE("the earliest conflict of any robot pair is found, whichever pair come
     CHECK(conflict->robot_a == 0);
     CHECK(conflict->robot_b == 1);
   }
+}
+
+TEST_CASE("a conflict left unresolved is named by what each robot is doing", "[planner][dash]") {
+  // the 3 robots' greedy plan has conflicts from its first schedule on: one node leaves the
+  // first of them unresolved, and the reason says which robots meet, doing what, and when
+  WorldGraph g(worldPath("sort_3r_6c_side.yaml"));
+  const SearchResult found = HyperpathSearch(g.graph).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  ConflictResolutionBudget budget;
+  budget.max_nodes = 1;
+  const ConflictResult resolved = resolveConflicts(g.graph, *found.plan, budget);
+  REQUIRE(resolved.status == ConflictStatus::kBudget);
+  INFO(resolved.reason);
+  const std::string doing =
+      R"(\((at home|done|folding|unfolding|on its way to rest|((waiting for|on its way to|parking on its way to) )?)"
+      R"((pick|place|handoff) cube_\d( by r\d)+( to r\d)?)\))";
+  CHECK_THAT(resolved.reason, Catch::Matches("r\\d " + doing + " and r\\d " + doing + " collide at t = [0-9.]+ s"));
 }
