@@ -13,6 +13,9 @@ using Clock = PlanningRounds::Clock;
 /// Failed direct task plans of a round resolved again (PlannerSettings::conflict_reroutes_retry).
 constexpr std::size_t kSecondTries = 3;
 
+/// Whether `t` is set and has passed.
+bool past(const std::optional<Clock::time_point>& t) { return t && Clock::now() >= *t; }
+
 /// [s] the time `work` takes, less the construction time it adds meanwhile: the search and
 /// conflict resolution plan moves lazily (for the task plan, detours, parkings), which counts
 /// as the representation's construction.
@@ -81,7 +84,6 @@ PlanningRounds::PlanningRounds(MotionHypergraph& graph, const PlannerSettings& s
 }
 
 bool PlanningRounds::timeUp() const {
-  const auto past = [](const std::optional<Clock::time_point>& t) { return t && Clock::now() >= *t; };
   return past(deadline_) || (direct_queries_ && past(direct_deadline_));
 }
 
@@ -309,7 +311,6 @@ bool PlanningRounds::checkPlaceable() {
 }
 
 void PlanningRounds::run() {
-  const auto past = [](const std::optional<Clock::time_point>& t) { return t && Clock::now() >= *t; };
   for (int round = 1; round <= settings_.max_rounds && !timeUp(); ++round) {
     if (round > 1) graph_.expand();
     feedbacks_ = 0;

@@ -38,6 +38,9 @@ class PlanningRounds {
   PlanningRounds(MotionHypergraph& graph, const PlannerSettings& settings, PlannerStats& stats,
                  std::optional<Clock::time_point> deadline, std::optional<Clock::time_point> direct_deadline,
                  std::function<void(const std::string&)> say);
+  // its budgets' stop tests refer to it
+  PlanningRounds(const PlanningRounds&) = delete;
+  PlanningRounds& operator=(const PlanningRounds&) = delete;
 
   /// Runs rounds until a plan is found (and, for MM-DaSH, improved), the rounds or the time
   /// run out, or an object turns out never placeable.

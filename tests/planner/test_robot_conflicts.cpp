@@ -1,6 +1,7 @@
 // The robot-robot check of conflict resolution (firstConflict): which item of each robot a
 // conflict at an exact instant belongs to, and which pair's conflict comes first, on schedules
-// written by hand; and that it checks the robots where the written plan takes them.
+// written by hand; that it checks the robots where the written plan takes them; and how a
+// conflict left unresolved is named.
 #include <catch2/catch.hpp>
 
 #include <array>
