@@ -7,6 +7,7 @@
 
 #include "planner/planner_text.h"
 #include "planner/robot_conflicts.h"
+#include "planner/temporal_network.h"
 
 namespace dashbed::planner {
 namespace {
@@ -15,12 +16,6 @@ constexpr Millis kObstacleStep = 100;    // [ms] how often the other robot is sa
 constexpr std::size_t kMaxObstacles = 30;  // more distinct states than this for a detour: the
                                            // other robot is moving through, ordering is the remedy
 constexpr std::size_t kMaxParkingObstacles = 120;  // a parking is checked per configuration only
-
-/// A precedence S[to] >= S[from] + lag.
-struct Edge {
-  int from = -1, to = -1;
-  Millis lag = 0;
-};
 
 /// A scheduling constraint of the high level: a point of segment `from` (its start, or its end)
 /// comes no later than a point of segment `to`. Kept symbolic, as detours change durations.
@@ -32,7 +27,7 @@ struct Precedence {
   bool operator==(const Precedence&) const = default;
 };
 
-Edge edgeOf(const Precedence& p, const std::vector<ScheduleSegment>& segments) {
+TemporalEdge edgeOf(const Precedence& p, const std::vector<ScheduleSegment>& segments) {
   return {p.from, p.to, (p.from_end ? segments[p.from].duration : 0) - (p.to_end ? segments[p.to].duration : 0)};
 }
 
@@ -61,22 +56,6 @@ struct DetourConstraint {
 /// and the way to the parking is free to go early.
 void splitIndex(int k, int& segment) {
   if (segment >= k) ++segment;
-}
-
-/// The earliest schedule satisfying `edges`, or std::nullopt for a positive cycle.
-std::optional<std::vector<Millis>> earliestStarts(std::size_t count, const std::vector<Edge>& edges) {
-  std::vector<Millis> start(count, 0);
-  for (std::size_t round = 0; round <= count; ++round) {
-    bool changed = false;
-    for (const Edge& e : edges) {
-      if (start[e.from] + e.lag > start[e.to]) {
-        start[e.to] = start[e.from] + e.lag;
-        changed = true;
-      }
-    }
-    if (!changed) return start;
-  }
-  return std::nullopt;
 }
 
 Millis makespanOf(const Schedule& schedule) {
@@ -142,9 +121,9 @@ std::vector<ScheduleSegment> segmentsOf(const MotionHypergraph& graph, const Tra
 }
 
 /// The temporal network of a history's segments (see the header).
-std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const TransitionHistory& history,
-                                  const std::vector<ScheduleSegment>& segments, SequentialSteps steps) {
-  std::vector<Edge> edges;
+std::vector<TemporalEdge> baseConstraints(const MotionHypergraph& graph, const TransitionHistory& history,
+                                          const std::vector<ScheduleSegment>& segments, SequentialSteps steps) {
+  std::vector<TemporalEdge> edges;
   const int n = static_cast<int>(segments.size());
   // each object's pick and place segment (the transition parts), and where it is set aside,
   // its segments setting it down and taking it up again
@@ -157,7 +136,7 @@ std::vector<Edge> baseConstraints(const MotionHypergraph& graph, const Transitio
       // a move into a transition arrives just in time: the robot waits where it was, not in
       // front of the transition, where it could block the robot it is waiting for
       if (segments[s].move != nullptr && segments[s + 1].motion != nullptr && !segments[s].early) {
-        edges.push_back({s + 1, s, -segments[s].duration});
+        edges.push_back({s + 1, s, -segments[s].duration, true});
       }
     }
     if (segments[s].motion == nullptr) continue;
@@ -376,13 +355,30 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     return node;
   };
   std::uint64_t created = 0;
-  // a node: its segments at the earliest times their temporal network allows
+  // a node: its segments at the earliest times their temporal network allows. Where they
+  // cannot all hold and `arrive_early` is given, a move into a transition on the contradiction
+  // (a cycle of precedences) that arrives just in time may arrive early and wait in front of the
+  // transition instead (its segment is added to `arrive_early`): that robot cannot both wait
+  // where it was and be out of the way in time.
   const auto make = [&](std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
-                        std::vector<DetourConstraint> detours, int parkings, bool folded) -> std::optional<Node> {
-    std::vector<Edge> edges = baseConstraints(graph, history, segments, steps);
-    for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
-    std::optional<std::vector<Millis>> start = earliestStarts(segments.size(), edges);
-    if (!start) return std::nullopt;
+                        std::vector<DetourConstraint> detours, int parkings, bool folded,
+                        std::vector<int>* arrive_early = nullptr) -> std::optional<Node> {
+    std::optional<std::vector<Millis>> start;
+    for (std::vector<std::size_t> cycle; !start;) {
+      std::vector<TemporalEdge> edges = baseConstraints(graph, history, segments, steps);
+      for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
+      start = earliestStarts(segments.size(), edges, &cycle);
+      if (start) break;
+      if (arrive_early == nullptr) return std::nullopt;
+      const std::size_t known = arrive_early->size();
+      for (const std::size_t e : cycle) {
+        if (edges[e].arrival) {
+          segments[edges[e].to].early = true;
+          arrive_early->push_back(edges[e].to);
+        }
+      }
+      if (arrive_early->size() == known) return std::nullopt;
+    }
     Schedule schedule;
     schedule.segments = std::move(segments);
     schedule.start = std::move(*start);
@@ -536,30 +532,27 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     };
     // time: A before B, B before A
     bool ordered = false;
+    std::vector<Node> making_room;
     for (const bool a_first : {true, false}) {
       const std::optional<Precedence> p = a_first ? precedence(view, ra, conflict->item_a, rb, conflict->item_b)
                                                   : precedence(view, rb, conflict->item_b, ra, conflict->item_a);
       if (!p || std::find(node.extra.begin(), node.extra.end(), *p) != node.extra.end()) continue;
       std::vector<Precedence> extra = node.extra;
       extra.push_back(*p);
-      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings, node.folded);
-      // a move into a transition that cannot end before the other starts just in time (both
-      // robots going into one handoff) may arrive early and wait in front of it
-      const std::vector<ScheduleSegment>& segments = node.schedule.segments;
-      const int a = p->from;
-      if (!child && p->from_end && segments[a].move != nullptr && !segments[a].early &&
-          a + 1 < static_cast<int>(segments.size()) && segments[a + 1].robot == segments[a].robot &&
-          segments[a + 1].motion != nullptr) {
-        std::vector<ScheduleSegment> early = segments;
-        early[a].early = true;
-        child = make(std::move(early), std::move(extra), node.detours, node.parkings, node.folded);
-      }
-      // an order whose schedule is not below the bound leaves the conflict to a reroute
-      if (child && push(std::move(*child))) ordered = true;
+      std::vector<int> early;
+      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings, node.folded, &early);
+      // A's move into a transition arriving early, where A cannot end before B starts just in
+      // time (both robots going into one handoff), orders them; another robot arriving early
+      // to make room is one more way where no order does, beside the reroutes below. An order
+      // whose schedule is not below the bound leaves the conflict to a reroute.
+      const bool a_early = std::all_of(early.begin(), early.end(), [&](int s) { return p->from_end && s == p->from; });
+      if (child && !a_early) making_room.push_back(std::move(*child));
+      if (child && a_early && push(std::move(*child))) ordered = true;
     }
     // space, when time cannot help: a robot on a move takes a detour around where the other one
     // is meanwhile; a robot standing before a move waits somewhere out of the other one's way
     if (ordered) continue;
+    for (Node& child : making_room) push(std::move(child));
     const int ta = transitionOf(history, node.schedule, view.timeline(ra), conflict->item_a);
     const int tb = transitionOf(history, node.schedule, view.timeline(rb), conflict->item_b);
     if (ta >= 0 && tb >= 0 && ta != tb) {

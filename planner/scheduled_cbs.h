@@ -21,8 +21,8 @@
 //    others stand at home or folded (or hold the object the step passes on); with idle robots
 //    folded, the robots fold before the first step and unfold after the last;
 //  - the constraints added by the high level.
-// The earliest schedule is the longest-path solution (Bellman-Ford; a positive cycle means the
-// constraints cannot all hold).
+// The earliest schedule is the longest-path solution (temporal_network.h; a cycle of positive lag
+// means the constraints cannot all hold).
 //
 // High level: best-first over constraint sets by makespan, as a focal search (ECBS's high level):
 // of the open nodes at most focal_weight times as long as the shortest, the one free of conflicts
@@ -33,10 +33,14 @@
 // item A of robot a and item B of robot b (an item is a segment, or the robot standing still
 // between two segments), the node branches into "A ends before B starts" and "B ends before A
 // starts" — each a precedence (hyperarc-hyperarc or vertex-hyperarc scheduling constraint) on the
-// segment starts. When neither order can hold (a cycle with the schedule's own precedences), the
-// low level changes a robot's route on its roadmap instead (at most max_reroutes roadmap searches
-// per call, and as many again below a folded robot, see below; a reroute asked again, the same move
-// around the same states, in another node gets the answer found before):
+// segment starts. An order that cannot hold for a move arriving just in time on the cycle (A's
+// own, or another robot's, which then cannot both wait where it was and make room in time) holds
+// with that move arriving early and waiting in front of its transition; with A's own that is an
+// order, with another's only one more child beside the reroutes below. When neither order can
+// hold (a cycle with the schedule's own precedences), the low level changes a robot's route on
+// its roadmap instead (at most max_reroutes roadmap searches per call, and as many again below a
+// folded robot, see below; a reroute asked again, the same move around the same states, in
+// another node gets the answer found before):
 //  - a detour: the move A (or B) planned again so that it keeps clear of where the other robot
 //    stands or passes meanwhile (its states every 100 ms of the move's window);
 //  - a parking: a robot standing before a move, in the other's way, goes early to a roadmap

@@ -296,11 +296,11 @@ TEST_CASE("six robots in a ring get a direct plan from the second try along time
 
 TEST_CASE("a plan with the robots parked out of every transition's way is a fallback: the direct queries go on",
           "[planner][dash]") {
-  // the row of three with a cube of its own at each end: no direct task plan of round 1
-  // resolves, the one keeping clear of the robots at home does; like a sequential plan it is
-  // kept while the direct queries of sequential_fallback_rounds more rounds look for a shorter
-  // one, and the sequential query never runs
-  const core::LoadedWorld world = core::loadWorld(testWorldPath("row_3r_relay_own_cubes.yaml"));
+  // a row of three relaying cubes from end to end: no direct task plan of round 1 resolves,
+  // the one keeping clear of the robots at home does; like a sequential plan it is kept while
+  // the direct queries of sequential_fallback_rounds more rounds look for a shorter one, and the
+  // sequential query never runs
+  const core::LoadedWorld world = core::loadWorld(worldPath("handwritten/v16_row3_relay.yaml"));
   const PlannerSettings settings;
   std::vector<std::string> progress;
   PlannerBudget budget;
