@@ -364,10 +364,10 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
                         std::vector<DetourConstraint> detours, int parkings, bool folded,
                         std::vector<int>* arrive_early = nullptr) -> std::optional<Node> {
     std::optional<std::vector<Millis>> start;
-    for (std::vector<std::size_t> cycle; !start;) {
+    for (std::vector<std::size_t> cycle;;) {
       std::vector<TemporalEdge> edges = baseConstraints(graph, history, segments, steps);
       for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
-      start = earliestStarts(segments.size(), edges, &cycle);
+      start = earliestStarts(segments.size(), edges, arrive_early != nullptr ? &cycle : nullptr);
       if (start) break;
       if (arrive_early == nullptr) return std::nullopt;
       const std::size_t known = arrive_early->size();

@@ -22,8 +22,8 @@ struct TemporalEdge {
 
 /// The earliest start times (none before 0) of `count` segments that satisfy `edges`
 /// (Bellman-Ford), or std::nullopt when they cannot all hold: then, when `cycle` is given, it
-/// holds the edges (indices into `edges`, each one's `from` the `to` of the next, the last
-/// one's `from` the first one's `to`) of a cycle whose lags sum above zero.
+/// holds the edges (indices into `edges`, each one's `to` the `from` of the next, the last
+/// one's `to` the first one's `from`) of a cycle whose lags sum above zero.
 std::optional<std::vector<Millis>> earliestStarts(std::size_t count, const std::vector<TemporalEdge>& edges,
                                                   std::vector<std::size_t>* cycle = nullptr);
 
