@@ -22,6 +22,10 @@ Pose makePose(const Eigen::Vector3d& xyz, const Eigen::Vector3d& rpy);
 /// Pose from a translation and a rotation about +z (yaw).
 Pose makePoseXyzYaw(const Eigen::Vector3d& xyz, double yaw);
 
+/// The shortest rotation turning the direction of `from` onto that of `to` (about their common
+/// normal); half a turn about an axis normal to `from` when they are opposite. Neither may be zero.
+Eigen::Matrix3d rotationBetween(const Eigen::Vector3d& from, const Eigen::Vector3d& to);
+
 /// Wraps an angle to (-pi, pi].
 double wrapToPi(double angle);
 

@@ -9,6 +9,7 @@
 
 #include "core/geometry.h"
 #include "core/grasps.h"
+#include "core/pose.h"
 #include "core/ur_ik.h"
 #include "core/world_io.h"
 
@@ -122,7 +123,7 @@ Box segmentBox(const Eigen::Vector3d& p, const Eigen::Vector3d& q, double width)
   box.X_WB = Pose::Identity();
   box.X_WB.translation() = 0.5 * (p + q);
   const Eigen::Vector3d d = q - p;
-  box.X_WB.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitX(), d).toRotationMatrix();
+  box.X_WB.linear() = rotationBetween(Eigen::Vector3d::UnitX(), d);
   box.size = Eigen::Vector3d(d.norm(), width, width);
   return box;
 }

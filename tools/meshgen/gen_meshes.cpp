@@ -17,6 +17,7 @@
 #include <filesystem>
 #include <numbers>
 #include <string>
+#include <string_view>
 
 namespace dashbed::meshgen {
 namespace {
@@ -328,9 +329,11 @@ int run(const std::filesystem::path& out_dir) {
 }  // namespace dashbed::meshgen
 
 int main(int argc, char** argv) {
-  if (argc != 2) {
-    std::fprintf(stderr, "usage: %s OUTPUT_DIR\n", argc > 0 ? argv[0] : "dashbed_gen_meshes");
-    return 2;
+  // an option such as --help is not taken for a directory to write into
+  if (argc != 2 || argv[1][0] == '-') {
+    std::fprintf(stderr, "usage: %s OUTPUT_DIR (writes OUTPUT_DIR/ur5e and OUTPUT_DIR/hande)\n",
+                 argc > 0 ? argv[0] : "dashbed_gen_meshes");
+    return argc == 2 && std::string_view(argv[1]) == "--help" ? 0 : 2;
   }
   try {
     return dashbed::meshgen::run(argv[1]);

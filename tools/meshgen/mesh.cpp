@@ -7,6 +7,8 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/pose.h"
+
 namespace dashbed::meshgen {
 
 int Mesh::addVertex(const Eigen::Vector3d& p, const Eigen::Vector3d& n) {
@@ -231,7 +233,7 @@ void writeObj(const Mesh& mesh, const std::filesystem::path& file, const std::st
 
 Eigen::Isometry3d axisFrame(const Eigen::Vector3d& origin, const Eigen::Vector3d& axis) {
   Eigen::Isometry3d X = Eigen::Isometry3d::Identity();
-  X.linear() = Eigen::Quaterniond::FromTwoVectors(Eigen::Vector3d::UnitZ(), axis).toRotationMatrix();
+  X.linear() = core::rotationBetween(Eigen::Vector3d::UnitZ(), axis);
   X.translation() = origin;
   return X;
 }
