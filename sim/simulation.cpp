@@ -287,7 +287,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
     Impl::Robot robot;
     // group links into bodies: the root and each movable joint's child head a body
     robot.link_to_body.assign(model.links().size(), -1);
-    robot.bodies.push_back({0, {}, 0.0, Pose::Identity(), {}});
+    robot.bodies.emplace_back().head_link = 0;
     robot.q_to_mb_link.assign(model.numPositions(), -1);
     for (std::size_t l = 0; l < model.links().size(); ++l) {
       const int j = model.links()[l].parent_joint;
@@ -298,7 +298,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
       } else {
         robot.q_to_mb_link[model.joints()[j].q_index] = static_cast<int>(robot.bodies.size()) - 1;
         robot.link_to_body[l] = static_cast<int>(robot.bodies.size());
-        robot.bodies.push_back({static_cast<int>(l), {}, 0.0, Pose::Identity(), {}});
+        robot.bodies.emplace_back().head_link = static_cast<int>(l);
       }
       robot.bodies[robot.link_to_body[l]].links.push_back(static_cast<int>(l));
     }
