@@ -42,7 +42,7 @@ Eigen::Matrix3d rotationBetween(const Eigen::Vector3d& from, const Eigen::Vector
   const Eigen::Vector3d v = to.normalized();
   const double c = u.dot(v);
   if (c < -1.0 + 1e-12) {
-    // opposite: half a turn about the unit axis most normal to u
+    // opposite: half a turn about an axis normal to u (u x x, or u x y where u is near x)
     Eigen::Vector3d axis = u.cross(Eigen::Vector3d::Unit(0));
     if (axis.squaredNorm() < 0.5) axis = u.cross(Eigen::Vector3d::Unit(1));
     return Eigen::AngleAxisd(std::numbers::pi, axis.normalized()).toRotationMatrix();
