@@ -6,15 +6,12 @@
 #include "core/kinematics.h"
 #include "core/robot_model.h"
 
+#include "tests/core/ur5e_hande_model.h"
+
 using namespace dashbed::core;
+using dashbed::test::ur5eHande;
 
 namespace {
-
-const RobotModel& ur5eHande() {
-  static const RobotModel model =
-      RobotModel::fromUrdfFile(std::string(DASHBED_SOURCE_ROOT) + "/assets/ur5e_hande.urdf");
-  return model;
-}
 
 Eigen::VectorXd randomQ(std::mt19937_64& rng) {
   std::uniform_real_distribution<double> angle(-3.0, 3.0), stroke(0.0, 0.025);

@@ -7,15 +7,12 @@
 #include "core/robot_model.h"
 #include "core/ur_ik.h"
 
+#include "tests/core/ur5e_hande_model.h"
+
 using namespace dashbed::core;
+using dashbed::test::ur5eHande;
 
 namespace {
-
-const RobotModel& ur5eHande() {
-  static const RobotModel model =
-      RobotModel::fromUrdfFile(std::string(DASHBED_SOURCE_ROOT) + "/assets/ur5e_hande.urdf");
-  return model;
-}
 
 Eigen::VectorXd fullQ(const ArmConfig& arm) {
   Eigen::VectorXd q = Eigen::VectorXd::Zero(ur5eHande().numPositions());
