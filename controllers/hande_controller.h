@@ -5,17 +5,17 @@
 // applies as a force-limited velocity servo on each finger joint; both fingers get the same
 // command, so they stay symmetric about the TCP.
 
+#include "core/hande.h"
 #include "core/plan.h"
 #include "core/world.h"
 
 namespace dashbed::controllers {
 
-/// Hand-E ranges (reference file: closing_speed_m_s, grip_force_N; S4, S5, S7).
-inline constexpr double kHandeMinSpeed = 0.020;   ///< [m/s]
-inline constexpr double kHandeMaxSpeed = 0.150;   ///< [m/s]
-inline constexpr double kHandeMinForce = 20.0;    ///< [N]
-inline constexpr double kHandeMaxForce = 185.0;   ///< [N]
-inline constexpr double kHandeStroke = 0.025;     ///< per finger [m]
+using core::kHandeMaxForce;
+using core::kHandeMaxSpeed;
+using core::kHandeMinForce;
+using core::kHandeMinSpeed;
+using core::kHandeStroke;
 
 struct FingerServo {
   double velocity = 0.0;   ///< finger joint velocity target [m/s]; + opens

@@ -6,12 +6,15 @@
 
 #include <Eigen/Core>
 
-#include "controllers/trajectory_interpolator.h"
+#include "core/trajectory_interpolator.h"
 #include "core/dynamics.h"
 #include "core/robot_model.h"
 #include "core/world.h"
 
 namespace dashbed::controllers {
+
+using core::JointReference;
+using core::Vector6;
 
 struct ArmTorques {
   Vector6 tau{};                ///< [Nm] applied, after clamping

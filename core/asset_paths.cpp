@@ -2,6 +2,7 @@
 
 #include <cstdlib>
 #include <stdexcept>
+#include <system_error>
 #include <string>
 
 namespace dashbed::core {
@@ -9,6 +10,14 @@ namespace dashbed::core {
 std::filesystem::path dataRoot() {
   if (const char* home = std::getenv("DASHBED_HOME"); home != nullptr && *home != '\0') {
     return home;
+  }
+  std::error_code error;
+  const std::filesystem::path binary = std::filesystem::read_symlink("/proc/self/exe", error);
+  const std::filesystem::path candidates[] = {
+      error ? std::filesystem::path() : binary.parent_path().parent_path() / "share" / "dashbed",
+      DASHBED_SOURCE_ROOT, DASHBED_INSTALL_DATADIR};
+  for (const std::filesystem::path& root : candidates) {
+    if (!root.empty() && std::filesystem::is_directory(root / "assets", error)) return root;
   }
   return DASHBED_SOURCE_ROOT;
 }

@@ -6,8 +6,10 @@
 
 namespace dashbed::core {
 
-/// The project root holding assets/ and worlds/: $DASHBED_HOME if set, else the source tree
-/// the binary was built from.
+/// The folder holding assets/ and worlds/, the first of: $DASHBED_HOME if set; the running
+/// binary's ../share/dashbed (an installed dashbed); the source tree the library was built
+/// from; the install prefix's share/dashbed (a program of one's own linked to an installed
+/// dashbed). A candidate counts when it holds assets/.
 std::filesystem::path dataRoot();
 
 /// assets/<model>.urdf under dataRoot(). Throws std::runtime_error if it does not exist.

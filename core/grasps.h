@@ -7,12 +7,11 @@
 
 #include <Eigen/Core>
 
+#include "core/hande.h"
 #include "core/pose.h"
 
 namespace dashbed::core {
 
-/// Widest box face pair the Hand-E can close on: 2 x 25 mm stroke (reference file, S4-S7).
-inline constexpr double kHandeMaxOpening = 0.050;
 /// The opening a grasp keeps to spare around the box, and the fingertips above the surface [m].
 inline constexpr double kGraspClearance = 0.005;
 /// How far the fingertips reach beyond the TCP along the approach axis: tip end 145.5 mm vs

@@ -8,6 +8,7 @@
 
 #include "core/plan.h"
 
+#include "core/hande.h"
 #include "core/json_pointer.h"
 #include "core/number_text.h"
 #include "core/text_file.h"
@@ -31,7 +32,6 @@ namespace {
 using Json = nlohmann::json;
 using OrderedJson = nlohmann::ordered_json;
 
-constexpr double kHandEMaxForce = 185.0;  // Robotiq Hand-E maximum grip force [N]
 constexpr double kVelocitySlack = 1.01;   // segment speeds may exceed max_velocity by 1 %
 constexpr double kLimitSlack = 1e-9;      // joint limits: rounding slack [rad]
 constexpr double kTimeSlack = 1e-9;       // action ends vs. the end of the motion [s]
@@ -507,9 +507,9 @@ void checkGripper(const Plan& plan, const std::string& file) {
            "robot " + inQuotes(command.robot) + " already has a gripper command at " +
                exact(command.t) + " s (" + gripperPointer(it->second) + ")");
     }
-    if (!std::isfinite(command.force) || command.force < 0.0 || command.force > kHandEMaxForce) {
+    if (!std::isfinite(command.force) || command.force < 0.0 || command.force > kHandeMaxForce) {
       fail(file, at(pointer, "force"),
-           exact(command.force) + " N outside [0, " + brief(kHandEMaxForce) +
+           exact(command.force) + " N outside [0, " + brief(kHandeMaxForce) +
                "] N (0: the world's grip force; 185 N: the Hand-E maximum)");
     }
   }

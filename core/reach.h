@@ -28,7 +28,7 @@ bool reachesBox(const PlacedRobot& robot, const Pose& X_WO, const Eigen::Vector3
 /// True when `robot` reaches some placement of `object` in `region`: at its centre
 /// (placementPose), or else at a point of a 5 x 5 grid over its floor, half the object's width
 /// in from the edges. A bin only partly in reach is a goal (the planner fills its reachable
-/// part); which robots may place an object is decided by its goal slot (planner/object_sites.h).
+/// part); which robots may place an object is decided by its goal slot (planner/sampling/object_sites.h).
 bool reachesPlacementIn(const PlacedRobot& robot, const Region& region, const ObjectSpec& object);
 
 ReachMap computeReach(const World& world, const RobotSet& robots);

@@ -22,6 +22,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/geometry.h"
+#include "core/hande.h"
 #include "core/text_file.h"
 #include "core/world_io.h"
 #include "core/world_yaml_detail.h"
@@ -646,10 +647,10 @@ void Reader::controller(const Field& field, ControllerSettings& settings) const 
   if (const auto f = map.get("kp")) settings.kp = nonNegativeArray<6>(*f);
   if (const auto f = map.get("kd")) settings.kd = nonNegativeArray<6>(*f);
   if (const auto f = map.get("grip_force")) {
-    settings.grip_force = within(*f, 20.0, 185.0, " N (the Robotiq Hand-E range)");
+    settings.grip_force = within(*f, kHandeMinForce, kHandeMaxForce, " N (the Robotiq Hand-E range)");
   }
   if (const auto f = map.get("finger_speed")) {
-    settings.finger_speed = within(*f, 0.02, 0.15, " m/s (the Robotiq Hand-E range)");
+    settings.finger_speed = within(*f, kHandeMinSpeed, kHandeMaxSpeed, " m/s (the Robotiq Hand-E range)");
   }
 }
 

@@ -5,8 +5,8 @@
 #include <sstream>
 #include <stdexcept>
 
-#include "planner/home_check.h"
-#include "planner/hyperpath_search.h"
+#include "planner/collision/home_check.h"
+#include "planner/search/hyperpath_search.h"
 #include "planner/plan_writer.h"
 #include "planner/planner_text.h"
 #include "planner/planning_rounds.h"
@@ -155,8 +155,6 @@ nlohmann::json planStatistics(const PlannerSettings& settings, const PlannerStat
 
 }  // namespace
 
-const char* toString(Method method) { return method == Method::kGreedy ? "greedy" : "optimal"; }
-
 const char* toString(PlannerStatus status) {
   switch (status) {
     case PlannerStatus::kSolved:
@@ -169,40 +167,19 @@ const char* toString(PlannerStatus status) {
   return "timeout";
 }
 
-std::uint64_t constrainedSearchExpansions(const PlannerSettings& settings, int round, std::uint64_t unconstrained) {
-  std::uint64_t grown = settings.constrained_search_expansions;
-  for (int r = 1; r < round && grown < settings.search_expansions; ++r) grown *= 2;
-  return std::min(settings.search_expansions, std::max(grown, 2 * unconstrained));
+std::shared_ptr<const CollisionScene> checkedScene(const core::LoadedWorld& world, const PlannerSettings& settings) {
+  auto scene = std::make_shared<const CollisionScene>(*world.world, *world.robots, settings.representation.collision);
+  requireFreeHomes(*world.world, *scene);
+  return scene;
 }
 
-std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode mode, bool constrained, int round,
-                                     std::uint64_t unconstrained) {
-  if (!constrained && !keepsClearOfIdle(mode)) return settings.search_expansions;
-  return constrainedSearchExpansions(settings, round, unconstrained);
-}
-
-PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget) {
-  if (settings.max_rounds < 1) throw std::invalid_argument("planner settings: max_rounds: must be >= 1");
-  if (settings.sequential_fallback_rounds < 0) {
-    throw std::invalid_argument("planner settings: sequential_fallback_rounds: must be >= 0");
-  }
-  if (!(settings.conflict_focal_weight >= 1.0)) {
-    throw std::invalid_argument("planner settings: conflict_focal_weight: must be >= 1");
-  }
-  if (settings.conflict_nodes < 1 || settings.conflict_nodes_along_time < 1 ||
-      settings.conflict_nodes_depth_first < 1) {
-    throw std::invalid_argument(
-        "planner settings: conflict_nodes, conflict_nodes_along_time, conflict_nodes_depth_first: must be >= 1");
-  }
-  if (settings.conflict_reroutes < 0 || settings.conflict_reroutes_retry < 0) {
-    throw std::invalid_argument("planner settings: conflict_reroutes, conflict_reroutes_retry: must be >= 0");
-  }
-  if (!(settings.direct_time_share > 0.0 && settings.direct_time_share <= 1.0)) {
-    throw std::invalid_argument("planner settings: direct_time_share: must be in (0, 1]");
-  }
+PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings, const PlannerBudget& budget,
+                 std::shared_ptr<const CollisionScene> checked_scene) {
+  validate(settings);
   PlanResult result;
   PlannerStats& stats = result.stats;
   const Clock::time_point started = Clock::now();
+  if (!checked_scene) checked_scene = checkedScene(world, settings);
   // the direct queries' share of the time (see direct_time_share): their searches and conflict
   // resolutions stop at its end, the sequential query's at the deadline
   std::optional<Clock::time_point> direct_deadline;
@@ -224,7 +201,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
   auto task_space = std::make_unique<const TaskSpaceHypergraph>(
       TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, placementReach(world, sites)));
   double task_space_seconds = secondsSince(started);
-  auto graph = std::make_unique<MotionHypergraph>(world, *task_space, sites, settings.seed, settings.representation);
+  auto graph = std::make_unique<MotionHypergraph>(world, *task_space, sites, settings.seed, settings.representation,
+                                                  checked_scene);
   const auto record = [&] {
     stats.construction_seconds = task_space_seconds + graph->constructionSeconds();
     stats.task_vertices = task_space->numVertices();
@@ -237,7 +215,6 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
     stats.roadmap_nodes = graph->numRoadmapNodes();
   };
 
-  requireFreeHomes(*world.world, graph->scene());
   // objects that can never reach their goals: infeasible, whatever the sampling
   {
     const HyperpathSearch probe(*graph);
@@ -271,7 +248,8 @@ PlanResult solve(const core::LoadedWorld& world, const PlannerSettings& settings
           *world.world, *world.robots, placementReach(world, sites), setAsideReach(world, sites)));
       // the first representation's construction (its pick samples) counts, then the new one's
       task_space_seconds += secondsSince(t0) + graph->constructionSeconds();
-      graph = std::make_unique<MotionHypergraph>(world, *with_aside, sites, settings.seed, settings.representation);
+      graph = std::make_unique<MotionHypergraph>(world, *with_aside, sites, settings.seed, settings.representation,
+                                                 checked_scene);
       task_space = std::move(with_aside);
       stats.set_aside_sites = static_cast<int>(given.size());
       say("set-aside sites: " + describeSetAsideSites(*world.world, sites, given) + crowdedPicksText(*graph, 4));

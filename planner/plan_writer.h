@@ -10,8 +10,8 @@
 //  - each transition becomes a plan action over its sample's action window.
 
 #include "core/plan.h"
-#include "planner/scheduled_cbs.h"
-#include "planner/transition_history.h"
+#include "planner/scheduling/scheduled_cbs.h"
+#include "planner/search/transition_history.h"
 
 namespace dashbed::planner {
 

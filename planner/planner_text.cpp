@@ -13,17 +13,6 @@ std::string secondsText(Millis t) {
 
 std::string nodesText(int nodes) { return " (" + std::to_string(nodes) + " nodes)"; }
 
-std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph& task_space, int hyperarc) {
-  const TransitionHyperarc& arc = task_space.hyperarcs().at(static_cast<std::size_t>(hyperarc));
-  const bool aside = arc.rest_pose == RestPose::kAside;
-  static const char* const kinds[] = {"pick", "place", "handoff"};
-  std::string text = std::string(aside && arc.kind == TransitionKind::kPlace ? "set aside" : kinds[static_cast<int>(arc.kind)]) +
-                     " " + world.objects[arc.object].name + " by " + world.robots[arc.robot].name;
-  if (arc.kind == TransitionKind::kHandoff) text += " to " + world.robots[arc.receiver].name;
-  if (aside && arc.kind == TransitionKind::kPick) text += " where it was set aside";
-  return text;
-}
-
 std::string describeTransition(const MotionHypergraph& graph, int id) {
   return describeHyperarc(*graph.world().world, graph.taskSpace(), graph.transition(id).sample.hyperarc) +
          " (transition " + std::to_string(id) + ")";

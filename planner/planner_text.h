@@ -4,8 +4,8 @@
 #include <string>
 #include <vector>
 
-#include "planner/motion_hypergraph.h"
-#include "planner/transition_history.h"
+#include "planner/motion/motion_hypergraph.h"
+#include "planner/search/transition_history.h"
 
 namespace dashbed::planner {
 
@@ -14,9 +14,6 @@ std::string secondsText(Millis t);
 
 /// " (12 nodes)": a conflict resolution's size, as the progress lines give it.
 std::string nodesText(int nodes);
-
-/// "pick cube_0 by r1", "handoff cube_0 by r0 to r1": a task-space hyperarc in words.
-std::string describeHyperarc(const core::World& world, const TaskSpaceHypergraph& task_space, int hyperarc);
 
 /// "place green_1 by r1 (transition 63)"
 std::string describeTransition(const MotionHypergraph& graph, int id);

@@ -24,8 +24,8 @@
 #include <string>
 #include <vector>
 
-#include "planner/dash_planner.h"
-#include "planner/scheduled_cbs.h"
+#include "planner/planner_settings.h"
+#include "planner/scheduling/scheduled_cbs.h"
 
 namespace dashbed::planner {
 

@@ -44,7 +44,7 @@ PlanExecutor::~PlanExecutor() = default;
 
 double PlanExecutor::planTime() const { return sim_.time() - offset_; }
 
-controllers::JointReference PlanExecutor::reference(int r) const {
+core::JointReference PlanExecutor::reference(int r) const {
   const auto& trajectory = trajectories_[r];
   return trajectory ? trajectory->at(planTime()) : holds_[r];
 }
@@ -74,7 +74,7 @@ void PlanExecutor::step() {
     const int ri = static_cast<int>(r);
     const Eigen::VectorXd q = sim_.jointPositions(ri);
     const Eigen::VectorXd qd = sim_.jointVelocities(ri);
-    const controllers::JointReference ref = reference(ri);
+    const core::JointReference ref = reference(ri);
     const core::Payload* payload = payloads_[r] ? &*payloads_[r] : nullptr;
     const controllers::ArmTorques torques = arm_controllers_[r]->compute(q, qd, ref, payload);
     sim_.setArmTorques(ri, torques.tau);

@@ -9,7 +9,7 @@
 
 #include "controllers/hande_controller.h"
 #include "controllers/joint_pd.h"
-#include "controllers/trajectory_interpolator.h"
+#include "core/trajectory_interpolator.h"
 #include "core/plan.h"
 #include "sim/simulation.h"
 
@@ -45,7 +45,7 @@ class PlanExecutor {
   void step();
 
   /// The arm reference of robot r at the current time.
-  controllers::JointReference reference(int r) const;
+  core::JointReference reference(int r) const;
   const controllers::HandeController& gripper(int r) const { return grippers_[r]; }
   const TrackingStats& tracking(int r) const { return stats_[r]; }
   /// The payload robot r's arm controller compensates now (see step), if any.
@@ -54,8 +54,8 @@ class PlanExecutor {
  private:
   Simulation& sim_;
   double offset_;
-  std::vector<std::optional<controllers::TrajectoryInterpolator>> trajectories_;  // per robot
-  std::vector<controllers::JointReference> holds_;  // per robot, used without a trajectory
+  std::vector<std::optional<core::TrajectoryInterpolator>> trajectories_;  // per robot
+  std::vector<core::JointReference> holds_;  // per robot, used without a trajectory
   std::vector<std::unique_ptr<controllers::JointPdController>> arm_controllers_;
   std::vector<controllers::HandeController> grippers_;
   std::vector<core::GripperCommand> gripper_commands_;  // sorted by time

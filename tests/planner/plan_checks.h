@@ -9,11 +9,11 @@
 
 #include <catch2/catch.hpp>
 
-#include "controllers/trajectory_interpolator.h"
+#include "core/trajectory_interpolator.h"
 #include "core/grasps.h"
 #include "core/plan.h"
 #include "core/world_loader.h"
-#include "planner/collision_checker.h"
+#include "planner/collision/collision_checker.h"
 
 namespace dashbed::planner::testing {
 
@@ -96,7 +96,7 @@ inline void requireNoRobotCollision(const core::Plan& plan, const core::LoadedWo
   exact.motion_step = 1e-3;
   const CollisionScene scene(*loaded.world, *loaded.robots, exact);
   CollisionChecker checker(scene);
-  std::vector<controllers::TrajectoryInterpolator> arms;
+  std::vector<core::TrajectoryInterpolator> arms;
   for (const core::RobotTrajectory& t : plan.trajectories) arms.emplace_back(t.points);
   const int n = static_cast<int>(arms.size());
   for (double t = 0.0; t <= plan.duration(); t += 0.002) {

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "core/world_loader.h"
-#include "planner/collision_checker.h"
+#include "planner/collision/collision_checker.h"
 
 namespace dashbed::planner::testing {
 

@@ -15,14 +15,14 @@
 #include <string>
 #include <vector>
 
-#include "controllers/trajectory_interpolator.h"
+#include "core/trajectory_interpolator.h"
 #include "core/plan.h"
 #include "core/world_io.h"
 #include "core/world_loader.h"
-#include "planner/collision_checker.h"
+#include "planner/collision/collision_checker.h"
 #include "planner/dash_planner.h"
-#include "planner/hyperpath_search.h"
-#include "planner/hypergraph_dot.h"
+#include "planner/search/hyperpath_search.h"
+#include "planner/motion/hypergraph_dot.h"
 #include "tests/planner/dash_test_support.h"
 #include "tests/planner/plan_checks.h"
 

@@ -13,10 +13,10 @@
 
 #include "core/world_loader.h"
 #include "planner/dash_planner.h"
-#include "planner/hyperpath_search.h"
-#include "planner/robot_conflicts.h"
-#include "planner/scheduled_cbs.h"
-#include "tools/scenarios.h"
+#include "planner/search/hyperpath_search.h"
+#include "planner/scheduling/robot_conflicts.h"
+#include "planner/scheduling/scheduled_cbs.h"
+#include "tools/scenarios/scenarios.h"
 #include "tests/planner/dash_test_support.h"
 #include "tests/planner/plan_checks.h"
 

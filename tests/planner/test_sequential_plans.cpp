@@ -11,11 +11,11 @@
 
 #include "core/world_loader.h"
 #include "core/plan.h"
-#include "planner/home_check.h"
-#include "planner/hyperpath_search.h"
+#include "planner/collision/home_check.h"
+#include "planner/search/hyperpath_search.h"
 #include "planner/plan_writer.h"
-#include "planner/robot_conflicts.h"
-#include "planner/scheduled_cbs.h"
+#include "planner/scheduling/robot_conflicts.h"
+#include "planner/scheduling/scheduled_cbs.h"
 #include "tests/planner/dash_test_support.h"
 
 using namespace dashbed;

@@ -14,7 +14,7 @@
 #include "sim/report.h"
 #include "sim/run_plan.h"
 #include "tests/sim/sim_test_worlds.h"
-#include "tools/scripted_plan.h"
+#include "tools/script/scripted_plan.h"
 
 using namespace dashbed;
 

@@ -49,7 +49,7 @@ TEST_CASE("the arm controller keeps within the effort limits and gives a diverge
   const core::RobotModel& model = *robots[0].model;
   const controllers::JointPdController pd(model, world.controller, Eigen::Vector3d(0.0, 0.0, -9.81));
   Eigen::VectorXd q = Eigen::VectorXd::Zero(8), qd = Eigen::VectorXd::Zero(8);
-  controllers::JointReference ref;
+  core::JointReference ref;
   ref.q[1] = 1.0;  // 1 rad off at the shoulder: far more than 150 Nm unclamped
   const controllers::ArmTorques far = pd.compute(q, qd, ref);
   CHECK(far.saturated);

@@ -1,0 +1,54 @@
+#include "sim/job/check_plan.h"
+
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <stdexcept>
+
+namespace dashbed::sim {
+namespace {
+
+void writeFile(const std::string& path, const std::string& text) {
+  std::ofstream out(path, std::ios::binary);
+  out << text;
+  if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+}  // namespace
+
+std::string stillsDirectory(const CheckOutputs& outputs) {
+  if (outputs.report_json.empty()) return "";
+  return std::filesystem::path(outputs.report_json).replace_extension(".stills").string();
+}
+
+RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
+                      const std::string& plan_file, const CheckOutputs& outputs) {
+  validatePlanForWorld(plan, world, robots, plan_file);
+  RecordedRun run = simulateAndRecord(world, robots, plan, plan_file, outputs.recording, stillsDirectory(outputs));
+  if (!outputs.report_json.empty()) writeFile(outputs.report_json, writeReportJson(run.report));
+  if (!outputs.junit.empty()) writeFile(outputs.junit, writeJUnitXml(run.report));
+  return run;
+}
+
+std::string summaryText(const Report& report, bool quiet) {
+  std::ostringstream out;
+  out << std::fixed << std::setprecision(2);
+  if (!quiet) {
+    for (const ActionReport& a : report.actions) {
+      out << (a.verdict == Verdict::kPassed ? "  PASS " : "  FAIL ") << std::right << std::setw(7) << a.planned_start
+          << "-" << std::left << std::setw(7) << a.planned_end << std::right << " " << a.id;
+      if (a.verdict == Verdict::kFailed) out << ": " << a.failure;
+      out << "\n";
+    }
+    out << (report.execution_verdict == Verdict::kPassed ? "  PASS " : "  FAIL ") << "execution";
+    if (report.execution_verdict == Verdict::kFailed) out << ": " << report.execution_failure;
+    out << "\n";
+  }
+  out << (report.passed() ? "PASSED" : "FAILED") << ": " << report.passedCount() << " of " << report.actions.size()
+      << " actions passed, execution " << (report.execution_verdict == Verdict::kPassed ? "clean" : "with problems")
+      << " (" << report.simulated_time << " s simulated)\n";
+  return out.str();
+}
+
+}  // namespace dashbed::sim

@@ -1,0 +1,202 @@
+// dashbed stress [WORLD]: many trials with perturbed object start poses, in threads and,
+// under mpirun, across MPI ranks; rank 0 gathers the outcomes and writes the results.
+
+#include <unistd.h>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <iostream>
+#include <thread>
+
+#include "core/asset_paths.h"
+#include "core/number_text.h"
+#include "core/world_loader.h"
+#include "sim/run_plan.h"
+#include "tools/cli/cli_support.h"
+#include "tools/cli/planner_options.h"
+#include "tools/parallel/parallel_trials.h"
+#include "tools/stress/process_group.h"
+#include "tools/stress/stress.h"
+#include "tools/stress/stress_output.h"
+#include "tools/stress/stress_summary.h"
+
+namespace dashbed::tools {
+namespace {
+
+struct StressOptions {
+  std::string world_file;
+  std::string plan_file;
+  std::string mode = "replay";
+  std::string out_dir = "stress_out";
+  CampaignSettings settings;
+  int threads = 0;  // 0: the machine's cores shared among the ranks on it
+  int worst = 5;
+  double min_success = -1.0;  // < 0: none
+  bool progress = false;
+};
+
+// the nominal plan of a replay campaign: the given file, or the planner's plan for the world
+core::Plan nominalPlan(const StressOptions& options, const core::LoadedWorld& loaded, std::string& description) {
+  if (!options.plan_file.empty()) {
+    description = options.plan_file;
+    return core::loadPlanFile(options.plan_file);
+  }
+  PlannerChoice choice = options.settings.planner;
+  choice.seed = options.settings.seed;
+  description = "planned (" + choice.method + ", seed " + std::to_string(choice.seed) + ")";
+  try {
+    return planForRun(loaded, choice);
+  } catch (const PlanningFailed& e) {
+    std::cerr << "dashbed stress: no nominal plan: " << e.what() << "\n";
+    throw CLI::RuntimeError(e.status == PlanningStatus::kTimeout ? kExitTimeout : kExitInfeasible);
+  }
+}
+
+void printWorst(const std::vector<TrialOutcome>& worst, const std::string& out_dir) {
+  if (worst.empty()) return;
+  std::cout << "worst trials (replay: dashbed sim " << out_dir << "/trial_N/plan.json --world " << out_dir
+            << "/trial_N/world.yaml):\n";
+  for (const TrialOutcome& o : worst) {
+    // the first failed check; summary.json and the trial's report.json have them all
+    std::cout << "  trial_" << o.index << ": " << o.failedActions() << " failed actions, "
+              << (o.primary ? toString(*o.primary) : "-") << ": " << o.failure.substr(0, o.failure.find("; ")) << "\n";
+  }
+}
+
+void runCampaign(const StressOptions& options, const ProcessGroup& group) {
+  const auto start = std::chrono::steady_clock::now();
+  CampaignSettings settings = options.settings;
+  settings.mode = parseStressMode(options.mode);
+  settings.check();
+  if (settings.mode == StressMode::kReplan && !options.plan_file.empty()) {
+    throw std::invalid_argument("--plan is for --mode replay (re-plan mode plans every trial)");
+  }
+  if (options.threads < 0) throw std::invalid_argument("--threads must be >= 0 (0: automatic)");
+  const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  const int threads = options.threads > 0 ? options.threads : std::max(1, cores / group.localSize());
+
+  const std::filesystem::path world_path =
+      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const core::LoadedWorld loaded = core::loadWorld(world_path);
+  CampaignInfo info{loaded.world->name, world_path.string(), "", settings,
+                    options.min_success >= 0.0 ? std::optional<double>(options.min_success) : std::nullopt};
+  std::optional<core::Plan> plan;
+  if (settings.mode == StressMode::kReplay) {
+    plan = nominalPlan(options, loaded, info.plan);
+    sim::validatePlanForWorld(*plan, *loaded.world, *loaded.robots, info.plan);
+  } else {
+    info.plan = "planned per trial (" + settings.planner.method + ")";
+  }
+  const TrialRunner runner(*loaded.world, world_path.string(), settings, plan);
+  if (group.rank() == 0) prepareOutputDirectory(options.out_dir);
+
+  // this rank's share: every size-th trial, so that each sweep point is spread over all ranks
+  std::vector<std::size_t> mine;
+  const auto rank = static_cast<std::size_t>(group.rank()), size = static_cast<std::size_t>(group.size());
+  for (std::size_t i = rank; i < settings.totalTrials(); i += size) mine.push_back(i);
+  std::optional<ProgressBar> progress;
+  if (group.rank() == 0 && (options.progress || isatty(STDERR_FILENO) == 1)) {
+    progress.emplace(std::cerr, mine.size(), group.size() > 1 ? "trials on rank 0" : "trials");
+  }
+  const std::vector<TrialOutcome> local = runTrials(runner, mine, threads, progress ? &*progress : nullptr);
+  if (progress) progress->finish();
+
+  const std::vector<std::string> parts = group.gatherToRoot(writeOutcomesJson(local));
+  if (group.rank() != 0) return;
+  std::vector<TrialOutcome> outcomes;
+  for (const std::string& part : parts) {
+    for (TrialOutcome& o : readOutcomesJson(part)) outcomes.push_back(std::move(o));
+  }
+  std::sort(outcomes.begin(), outcomes.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+
+  const std::vector<PointSummary> points = summarize(settings, outcomes);
+  std::vector<TrialOutcome> worst;
+  for (const std::size_t i : worstTrials(outcomes, options.worst)) worst.push_back(outcomes[i]);
+  writeCampaignFiles(options.out_dir, info, *loaded.world, points, outcomes, worst);
+  saveTrials(options.out_dir, runner, worst, threads);
+
+  std::cout << summaryText(info, points);
+  printWorst(worst, options.out_dir);
+  std::cout << outcomes.size() << " trials in " << core::fixedText(seconds, 1) << " s on " << group.size()
+            << (group.size() > 1 ? " processes" : " process") << " x " << threads << " threads: "
+            << core::fixedText(3600.0 * static_cast<double>(outcomes.size()) / seconds, 0)
+            << " trials/hour; results in " << options.out_dir << "/\n";
+  if (!meetsAll(info, points)) throw CLI::RuntimeError(kExitCheckFailed);
+}
+
+// An error in an MPI job: one rank alone may have hit it while the others wait in the
+// gather, so the whole job ends (with the exit code runGuarded gives the error).
+[[noreturn]] void abortJob(const ProcessGroup& group) {
+  int code = kExitInternal;
+  try {
+    runGuarded("stress", [] { throw; });  // prints the error being handled and maps it to a code
+  } catch (const CLI::RuntimeError& e) {
+    code = e.get_exit_code();
+  } catch (const std::exception& e) {
+    std::cerr << "dashbed stress (rank " << group.rank() << "): internal error: " << e.what() << "\n";
+  }
+  group.abort(code);
+}
+
+void runStress(const StressOptions& options) {
+  const ProcessGroup group;
+  if (group.size() == 1) return runCampaign(options, group);
+  try {
+    runCampaign(options, group);
+  } catch (const CLI::RuntimeError& e) {
+    if (e.get_exit_code() != kExitCheckFailed) group.abort(e.get_exit_code());  // after the gather: a clean end
+    throw;
+  } catch (...) {
+    abortJob(group);
+  }
+}
+
+}  // namespace
+
+void addStressCommand(CLI::App& app) {
+  auto options = std::make_shared<StressOptions>();
+  CampaignSettings& s = options->settings;
+  CLI::App* stress = app.add_subcommand(
+      "stress",
+      "Stress campaign: N trials with Gaussian noise on the objects' start poses (optionally mass and friction), "
+      "each replaying the nominal plan open-loop or re-planning, simulated headless. Writes OUT/summary.json "
+      "(success rates with Wilson 95 % intervals, failure taxonomy), OUT/junit.xml, OUT/trials.csv, "
+      "OUT/trials.json and the worst trials as OUT/trial_N/{world.yaml,plan.json,report.json}. Under "
+      "`mpirun -np K` the trials are shared among the ranks with identical results. Exit 0 done (failed trials "
+      "alone do not fail it), 1 a success rate below --min-success, 2 bad option, 3 bad input (world, plan), "
+      "4 / 5 no nominal plan (infeasible / planner timeout).");
+  stress->add_option("world", options->world_file, "world file (default: worlds/default.yaml)");
+  stress->add_option("--plan", options->plan_file, "replay this plan (default: plan the nominal world)");
+  stress->add_option("--mode", options->mode, "replay (the nominal plan, open-loop) or replan (plan every trial)")
+      ->capture_default_str();
+  stress->add_option("--trials,-n", s.trials, "trials (per sweep point)")->capture_default_str();
+  stress->add_option("--seed", s.seed, "campaign seed; trial i uses a seed mixed from it and i")->capture_default_str();
+  stress->add_option("--sigma-xy", s.sigmas.xy, "std dev of the x and y offsets [m]")->capture_default_str();
+  stress->add_option("--sigma-yaw", s.sigmas.yaw, "std dev of the yaw offset [rad]")->capture_default_str();
+  stress->add_option("--sigma-mass", s.sigmas.mass, "std dev of log(mass scale) [-]")->capture_default_str();
+  stress->add_option("--sigma-friction", s.sigmas.friction, "std dev of log(friction scale) [-]")->capture_default_str();
+  stress->add_option("--sweep", s.sweep_xy, "sweep sigma_xy over these increasing values [m] (comma-separated); "
+                                            "writes OUT/sweep.png")
+      ->delimiter(',');
+  // the planner's options of `dashbed plan` but --seed: each trial plans with its own seed
+  stress->add_option("--method", s.planner.method, "planning method: greedy or optimal")->capture_default_str();
+  stress->add_option("--time-budget", s.planner.time_budget, "planner wall-clock budget per plan [s]")
+      ->capture_default_str();
+  stress->add_option("--max-rounds", s.planner.max_rounds, "planner representation expansion rounds")
+      ->capture_default_str();
+  stress->add_option("--fallback-rounds", s.planner.fallback_rounds, kFallbackRoundsHelp)->capture_default_str();
+  stress->add_option("--threads,-j", options->threads, "worker threads per process (0: the cores of the machine "
+                                                       "shared among its ranks)")
+      ->capture_default_str();
+  stress->add_option("--out,-o", options->out_dir, "output directory")->capture_default_str();
+  stress->add_option("--worst", options->worst, "save this many worst trials")->capture_default_str()->check(
+      CLI::NonNegativeNumber);
+  stress->add_option("--min-success", options->min_success, "fail (exit 1) when a success rate is below this")
+      ->check(CLI::Range(0.0, 1.0));
+  stress->add_flag("--progress", options->progress, "progress bar on stderr even when it is not a terminal");
+  stress->callback([options] { runGuarded("stress", [&] { runStress(*options); }); });
+}
+
+}  // namespace dashbed::tools

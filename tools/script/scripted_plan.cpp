@@ -1,0 +1,1009 @@
+#include "tools/script/scripted_plan.h"
+
+#include <algorithm>
+#include <array>
+#include <cctype>
+#include <charconv>
+#include <cmath>
+#include <cstdint>
+#include <iomanip>
+#include <numbers>
+#include <optional>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#include "core/geometry.h"
+#include "core/grasps.h"
+#include "core/kinematics.h"
+#include "core/reach.h"
+
+namespace dashbed::tools {
+namespace {
+
+using core::ArmConfig;
+using core::GripperAction;
+using core::Pose;
+using Millis = std::int64_t;  // plan time in whole milliseconds (exact sums, short JSON numbers)
+
+const Eigen::Vector3d kUp = Eigen::Vector3d::UnitZ();
+
+/// Rounds a duration up to whole milliseconds (ignoring floating-point noise below 1e-9 ms).
+Millis ceilMillis(double seconds) { return static_cast<Millis>(std::ceil(seconds * 1000.0 - 1e-9)); }
+double toSeconds(Millis t) { return static_cast<double>(t) / 1000.0; }
+
+std::string fixed(double value, int digits = 3) {
+  std::ostringstream out;
+  const bool rounds_to_zero = std::abs(value) < 0.5 * std::pow(10.0, -digits);
+  out << std::fixed << std::setprecision(digits) << (rounds_to_zero ? 0.0 : value);  // no "-0.000"
+  return out.str();
+}
+
+std::string vec(const Eigen::Vector3d& v, int digits = 3) {
+  return "(" + fixed(v.x(), digits) + ", " + fixed(v.y(), digits) + ", " + fixed(v.z(), digits) + ")";
+}
+
+std::string describeTcp(const Pose& X_WT) {
+  return "TCP at " + vec(X_WT.translation()) + " m approaching along " + vec(X_WT.linear().col(2), 2);
+}
+
+double maxAbsDifference(const ArmConfig& a, const ArmConfig& b) {
+  double m = 0.0;
+  for (int j = 0; j < 6; ++j) m = std::max(m, std::abs(a[j] - b[j]));
+  return m;
+}
+
+Pose shifted(Pose X, const Eigen::Vector3d& delta) {
+  X.translation() += delta;
+  return X;
+}
+
+// ---- parsing -------------------------------------------------------------------------------
+
+struct Token {
+  std::string text;
+  int line = 0;
+  int column = 0;
+};
+
+enum class Verb { kPick, kPlace, kHand, kWait, kMoveHome, kMoveTo, kOpen, kClose, kStay };
+
+struct Statement {
+  Verb verb = Verb::kWait;
+  Token robot_token;
+  Token verb_token;
+  int robot = -1;
+  Token object_token;  // pick, place, hand
+  int object = -1;
+  bool side = false;                                  // pick from the side
+  Eigen::Vector3d offset = Eigen::Vector3d::Zero();   // pick, place: TCP offset in the object frame [m]
+  int region = -1;                                    // place in REGION
+  std::optional<Eigen::Vector3d> at;                  // place at X Y Z
+  int receiver = -1;                                  // hand
+  double seconds = 0.0;                               // wait
+  ArmConfig q{};                                      // move to
+};
+
+class ScriptParser {
+ public:
+  ScriptParser(const core::World& world, std::string name) : world_(world), name_(std::move(name)) {}
+
+  [[noreturn]] void fail(const Token& at, const std::string& what) const {
+    throw ScriptError(name_ + ":" + std::to_string(at.line) + ":" + std::to_string(at.column) + ": " + what);
+  }
+
+  std::vector<Statement> parse(std::string_view script) const {
+    std::vector<Statement> statements;
+    for (const std::vector<Token>& tokens : split(script)) statements.push_back(parseStatement(tokens));
+    return statements;
+  }
+
+ private:
+  /// Splits the text into statements of whitespace-separated tokens.
+  static std::vector<std::vector<Token>> split(std::string_view script) {
+    std::vector<std::vector<Token>> statements(1);
+    int line = 1, column = 1;
+    std::size_t i = 0;
+    const auto endStatement = [&] {
+      if (!statements.back().empty()) statements.emplace_back();
+    };
+    while (i < script.size()) {
+      const char c = script[i];
+      if (c == '\n') {
+        endStatement();
+        ++line;
+        column = 1;
+        ++i;
+      } else if (c == ';') {
+        endStatement();
+        ++column;
+        ++i;
+      } else if (c == '#') {
+        while (i < script.size() && script[i] != '\n') ++i;
+      } else if (std::isspace(static_cast<unsigned char>(c)) != 0) {
+        ++column;
+        ++i;
+      } else {
+        Token token{"", line, column};
+        while (i < script.size() && script[i] != ';' && script[i] != '#' &&
+               std::isspace(static_cast<unsigned char>(script[i])) == 0) {
+          token.text += script[i];
+          ++column;
+          ++i;
+        }
+        statements.back().push_back(std::move(token));
+      }
+    }
+    if (statements.back().empty()) statements.pop_back();
+    return statements;
+  }
+
+  /// Reads tokens of one statement in order; `after` is where a missing token is reported.
+  class Cursor {
+   public:
+    Cursor(const ScriptParser& parser, const std::vector<Token>& tokens) : parser_(parser), tokens_(tokens) {}
+    bool done() const { return next_ == tokens_.size(); }
+    const Token* peek() const { return done() ? nullptr : &tokens_[next_]; }
+    const Token& take(const std::string& expected) {
+      if (done()) parser_.fail(endOfStatement(), "expected " + expected + " after '" + tokens_.back().text + "'");
+      return tokens_[next_++];
+    }
+    void expectWord(const std::string& word) {
+      const Token& token = take("'" + word + "'");
+      if (token.text != word) parser_.fail(token, "expected '" + word + "', got '" + token.text + "'");
+    }
+    double number(const std::string& what) {
+      const Token& token = take(what);
+      double value = 0.0;
+      const char* first = token.text.data() + (token.text.starts_with('+') ? 1 : 0);
+      const char* last = first + token.text.size();
+      const auto [end, error] = std::from_chars(first, last, value);
+      if (error != std::errc() || end != last || !std::isfinite(value)) {
+        parser_.fail(token, "expected " + what + " (a number), got '" + token.text + "'");
+      }
+      return value;
+    }
+    Eigen::Vector3d vector3(const std::string& what) {
+      Eigen::Vector3d v;
+      for (int k = 0; k < 3; ++k) v[k] = number(what + " (3 numbers)");
+      return v;
+    }
+    void finish() const {
+      if (!done()) parser_.fail(tokens_[next_], "unexpected '" + tokens_[next_].text + "' at the end of the statement");
+    }
+    Token endOfStatement() const {
+      const Token& last = tokens_.back();
+      return Token{"", last.line, last.column + static_cast<int>(last.text.size()) + 1};
+    }
+
+   private:
+    const ScriptParser& parser_;
+    const std::vector<Token>& tokens_;
+    std::size_t next_ = 0;
+  };
+
+  template <typename T, typename Name>
+  static std::string names(const std::vector<T>& items, Name name) {
+    std::string list;
+    for (const T& item : items) list += (list.empty() ? "" : ", ") + name(item);
+    return list.empty() ? "none" : list;
+  }
+
+  int robotIndex(const Token& token) const {
+    for (std::size_t r = 0; r < world_.robots.size(); ++r) {
+      if (world_.robots[r].name == token.text) return static_cast<int>(r);
+    }
+    fail(token, "unknown robot '" + token.text + "' (world '" + world_.name + "' has " +
+                    names(world_.robots, [](const core::RobotSpec& r) { return r.name; }) + ")");
+  }
+
+  int objectIndex(const Token& token) const {
+    for (std::size_t o = 0; o < world_.objects.size(); ++o) {
+      if (world_.objects[o].name == token.text) return static_cast<int>(o);
+    }
+    fail(token, "unknown object '" + token.text + "' (world '" + world_.name + "' has " +
+                    names(world_.objects, [](const core::ObjectSpec& o) { return o.name; }) + ")");
+  }
+
+  int regionIndex(const Token& token) const {
+    for (std::size_t g = 0; g < world_.regions.size(); ++g) {
+      if (world_.regions[g].name == token.text) return static_cast<int>(g);
+    }
+    fail(token, "unknown region '" + token.text + "' (world '" + world_.name + "' has " +
+                    names(world_.regions, [](const core::Region& g) { return g.name; }) + ")");
+  }
+
+  /// "offset DX DY DZ" at the end of a pick or place.
+  static void parseOffset(Cursor& cursor, Statement& s) {
+    if (const Token* next = cursor.peek(); next != nullptr && next->text == "offset") {
+      cursor.take("'offset'");
+      s.offset = cursor.vector3("an offset DX DY DZ [m]");
+    }
+  }
+
+  Statement parseStatement(const std::vector<Token>& tokens) const {
+    Cursor cursor(*this, tokens);
+    Statement s;
+    s.robot_token = cursor.take("a robot");
+    s.robot = robotIndex(s.robot_token);
+    s.verb_token = cursor.take("a verb (picks, places, hands, waits, moves, opens, closes, stays)");
+    const std::string& verb = s.verb_token.text;
+    if (verb == "picks" || verb == "pick") {
+      s.verb = Verb::kPick;
+      s.object_token = cursor.take("an object");
+      s.object = objectIndex(s.object_token);
+      if (const Token* next = cursor.peek(); next != nullptr && next->text == "from") {
+        cursor.take("'from'");
+        const Token* article = cursor.peek();
+        if (article != nullptr && article->text == "the") cursor.take("'the'");
+        const Token& where = cursor.take("'side', 'top' or 'above'");
+        if (where.text == "side") {
+          s.side = true;
+        } else if (where.text != "top" && where.text != "above") {
+          fail(where, "expected 'side', 'top' or 'above', got '" + where.text + "'");
+        }
+      }
+      parseOffset(cursor, s);
+    } else if (verb == "places" || verb == "place") {
+      s.verb = Verb::kPlace;
+      s.object_token = cursor.take("an object");
+      s.object = objectIndex(s.object_token);
+      const Token& preposition = cursor.take("'in REGION' or 'at X Y Z'");
+      if (preposition.text == "in") {
+        s.region = regionIndex(cursor.take("a region"));
+      } else if (preposition.text == "at") {
+        s.at = cursor.vector3("a position X Y Z [m]");
+      } else {
+        fail(preposition, "expected 'in REGION' or 'at X Y Z', got '" + preposition.text + "'");
+      }
+      parseOffset(cursor, s);
+    } else if (verb == "hands" || verb == "hand") {
+      s.verb = Verb::kHand;
+      s.object_token = cursor.take("an object");
+      s.object = objectIndex(s.object_token);
+      cursor.expectWord("to");
+      const Token& receiver = cursor.take("a receiving robot");
+      s.receiver = robotIndex(receiver);
+      if (s.receiver == s.robot) fail(receiver, s.robot_token.text + " cannot hand an object to itself");
+    } else if (verb == "waits" || verb == "wait") {
+      s.verb = Verb::kWait;
+      const Token* at = cursor.peek();
+      s.seconds = cursor.number("a duration [s]");
+      if (s.seconds < 0.0) fail(*at, "a wait cannot be negative");
+      // a day: longer is a typo, and the plan's millisecond times would overflow
+      if (s.seconds > 86400.0) fail(*at, "a wait of at most 86400 s (a day), got " + at->text);
+    } else if (verb == "moves" || verb == "move") {
+      const Token& where = cursor.take("'home' or 'to Q1 .. Q6'");
+      if (where.text == "home") {
+        s.verb = Verb::kMoveHome;
+      } else if (where.text == "to") {
+        s.verb = Verb::kMoveTo;
+        for (int j = 0; j < 6; ++j) s.q[j] = cursor.number("six joint angles [rad]");
+      } else {
+        fail(where, "expected 'home' or 'to Q1 .. Q6', got '" + where.text + "'");
+      }
+    } else if (verb == "opens" || verb == "open") {
+      s.verb = Verb::kOpen;
+    } else if (verb == "closes" || verb == "close") {
+      s.verb = Verb::kClose;
+    } else if (verb == "stays" || verb == "stay") {
+      s.verb = Verb::kStay;
+    } else {
+      fail(s.verb_token, "unknown verb '" + verb + "' (expected picks, places, hands, waits, moves, opens, closes or stays)");
+    }
+    cursor.finish();
+    return s;
+  }
+
+  const core::World& world_;
+  std::string name_;
+};
+
+// ---- robot models and motion chains ---------------------------------------------------------
+
+/// What the planner needs of one robot.
+struct RobotContext {
+  const core::PlacedRobot* placed = nullptr;
+  std::array<std::string, 6> joint_names;
+  std::array<double, 6> max_velocity{};  // [rad/s]
+  std::vector<int> gripper_links;        // links below tool0 (coupling, housing, fingers)
+};
+
+RobotContext makeContext(const core::PlacedRobot& placed) {
+  RobotContext context;
+  context.placed = &placed;
+  const core::RobotModel& model = *placed.model;
+  for (int j = 0; j < 6; ++j) {
+    const core::JointModel& joint = model.joints()[model.movableJoints()[j]];
+    context.joint_names[j] = joint.name;
+    context.max_velocity[j] = joint.max_velocity;
+  }
+  const int tool0 = model.requireLink("tool0");
+  for (int link = 0; link < static_cast<int>(model.links().size()); ++link) {
+    for (int up = link; up >= 0;) {
+      if (up == tool0) {
+        context.gripper_links.push_back(link);
+        break;
+      }
+      const int joint = model.links()[up].parent_joint;
+      up = joint < 0 ? -1 : model.joints()[joint].parent_link;
+    }
+  }
+  return context;
+}
+
+/// A sequence of motions, gripper commands and dwells of one robot, built before it is placed
+/// on the robot's timeline (so that alternatives can be compared). Times are relative to
+/// the start of the chain. The first failure is kept in `error` and makes later calls no-ops.
+class Chain {
+ public:
+  struct Move {
+    Millis start;
+    Millis duration;
+    ArmConfig q;
+  };
+  struct Grip {
+    Millis t;
+    GripperAction action;
+  };
+
+  Chain(const RobotContext& robot, const ScriptSettings& settings, const ArmConfig& q)
+      : robot_(&robot), settings_(&settings), q_(q), X_WT_(robot.placed->tcpPoseInWorld(q)) {}
+
+  bool ok() const { return error_.empty(); }
+  const std::string& error() const { return error_; }
+  Millis elapsed() const { return elapsed_; }
+  const ArmConfig& q() const { return q_; }
+  const Pose& tcp() const { return X_WT_; }
+  const std::vector<Move>& moves() const { return moves_; }
+  const std::vector<Grip>& grips() const { return grips_; }
+  /// Configurations reached by the moves, in order (for geometric checks).
+  std::vector<ArmConfig> waypoints() const {
+    std::vector<ArmConfig> qs;
+    for (const Move& m : moves_) qs.push_back(m.q);
+    return qs;
+  }
+
+  /// Joint-space move to the IK solution of X_WT nearest the current configuration that is
+  /// clear of elbow and wrist singularities.
+  void jointTo(const Pose& X_WT, const std::string& what) {
+    if (!ok()) return;
+    for (const ArmConfig& q : robot_->placed->solveInWorld(X_WT, q_)) {
+      if (!regular(q)) continue;
+      jointToConfig(q);
+      X_WT_ = X_WT;
+      return;
+    }
+    error_ = "no IK solution clear of singularities for the " + what + ", " + describeTcp(X_WT);
+  }
+
+  /// Joint-space move to q (nothing when already there).
+  void jointToConfig(const ArmConfig& q) {
+    if (!ok() || q == q_) return;
+    double seconds = settings_->min_segment_time;
+    for (int j = 0; j < 6; ++j) {
+      seconds = std::max(seconds, std::abs(q[j] - q_[j]) * settings_->peak_factor /
+                                      (settings_->speed_fraction * robot_->max_velocity[j]));
+    }
+    push(q, ceilMillis(seconds));
+    X_WT_ = robot_->placed->tcpPoseInWorld(q);
+  }
+
+  /// Straight TCP line by delta_W [m] at constant orientation: IK waypoints every
+  /// cartesian_step, each the solution nearest the previous one.
+  void straight(const Eigen::Vector3d& delta_W, const std::string& what) {
+    if (!ok()) return;
+    const double length = delta_W.norm();
+    const int steps = std::max(1, static_cast<int>(std::ceil(length / settings_->cartesian_step - 1e-9)));
+    const Pose X_start = X_WT_;
+    for (int k = 1; k <= steps; ++k) {
+      const Pose X_WT = shifted(X_start, delta_W * (static_cast<double>(k) / steps));
+      const std::vector<ArmConfig> solutions = robot_->placed->solveInWorld(X_WT, q_);
+      if (solutions.empty()) {
+        error_ = "the " + what + " leaves the workspace: no IK solution for the " + describeTcp(X_WT);
+        return;
+      }
+      const ArmConfig& q = solutions.front();
+      if (!regular(q)) {
+        error_ = "the " + what + " passes near an elbow or wrist singularity at the " + describeTcp(X_WT);
+        return;
+      }
+      const double jump = maxAbsDifference(q, q_);
+      if (jump > settings_->max_step_jump) {
+        error_ = "the " + what + " would make the arm jump " + fixed(jump, 2) + " rad between waypoints (joint limit or " +
+                 "branch change) at the " + describeTcp(X_WT);
+        return;
+      }
+      double seconds = length / steps / settings_->cartesian_speed;
+      for (int j = 0; j < 6; ++j) {
+        seconds = std::max(seconds, std::abs(q[j] - q_[j]) * settings_->peak_factor /
+                                        (settings_->speed_fraction * robot_->max_velocity[j]));
+      }
+      push(q, ceilMillis(seconds));
+      X_WT_ = X_WT;
+    }
+  }
+
+  void grip(GripperAction action) {
+    if (ok()) grips_.push_back({elapsed_, action});
+  }
+  void dwell(Millis duration) {
+    if (ok()) elapsed_ += duration;
+  }
+
+ private:
+  bool regular(const ArmConfig& q) const {
+    return std::abs(std::sin(q[2])) >= settings_->singularity_margin &&
+           std::abs(std::sin(q[4])) >= settings_->singularity_margin;
+  }
+  void push(const ArmConfig& q, Millis duration) {
+    moves_.push_back({elapsed_, duration, q});
+    elapsed_ += duration;
+    q_ = q;
+  }
+
+  const RobotContext* robot_;
+  const ScriptSettings* settings_;
+  ArmConfig q_;
+  Pose X_WT_;
+  Millis elapsed_ = 0;
+  std::vector<Move> moves_;
+  std::vector<Grip> grips_;
+  std::string error_;
+};
+
+// ---- object geometry -------------------------------------------------------------------------
+
+/// The object frame re-labelled so that its z axis is the object axis nearest the world
+/// vertical (a right-handed permutation of the object axes): X_OU and the box size in U.
+struct UprightFrame {
+  Eigen::Matrix3d R_OU;
+  Eigen::Vector3d size_U;
+  double tilt;  // angle between U's z and the world vertical [rad]
+};
+
+UprightFrame uprightFrame(const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size) {
+  int k = 0;
+  for (int i = 1; i < 3; ++i) {
+    if (std::abs(R_WO(2, i)) > std::abs(R_WO(2, k))) k = i;
+  }
+  const int a = (k + 1) % 3, b = (k + 2) % 3;
+  const bool up = R_WO(2, k) > 0.0;
+  UprightFrame frame;
+  frame.R_OU.setZero();
+  frame.R_OU(k, 2) = up ? 1.0 : -1.0;
+  frame.R_OU(up ? a : b, 0) = 1.0;  // (a, b, k) and (b, a, -k) are right-handed
+  frame.R_OU(up ? b : a, 1) = 1.0;
+  frame.size_U = Eigen::Vector3d(size[up ? a : b], size[up ? b : a], size[k]);
+  frame.tilt = std::acos(std::min(1.0, std::abs(R_WO(2, k))));
+  return frame;
+}
+
+/// Extent of a box of `size` at orientation R_WO along the world direction v [m].
+double extentAlong(const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size, const Eigen::Vector3d& v) {
+  double extent = 0.0;
+  for (int k = 0; k < 3; ++k) extent += std::abs(R_WO.col(k).dot(v)) * size[k];
+  return extent;
+}
+
+Eigen::Matrix3d yawRotation(double yaw) { return Eigen::AngleAxisd(yaw, kUp).toRotationMatrix(); }
+
+// ---- the planner -----------------------------------------------------------------------------
+
+struct Timeline {
+  std::vector<std::pair<Millis, ArmConfig>> points;
+  Millis t = 0;        // the robot is free from here on
+  ArmConfig q{};       // where it is then
+  int held = -1;       // object index
+  Pose X_OT = Pose::Identity();  // TCP in the held object's frame
+  std::optional<GripperAction> last_command;
+  bool stays = false;
+};
+
+struct ObjectState {
+  Pose X_WO = Pose::Identity();
+  int holder = -1;
+  bool lost = false;     // released in the air by a bare "opens": pose unknown
+  Millis available = 0;  // another robot may approach it from here on
+};
+
+class ScriptPlanner {
+ public:
+  ScriptPlanner(const core::LoadedWorld& loaded, const ScriptSettings& settings, const ScriptParser& parser)
+      : world_(*loaded.world), settings_(settings), parser_(parser) {
+    for (const core::PlacedRobot& placed : loaded.robots->robots()) {
+      robots_.push_back(makeContext(placed));
+      Timeline timeline;
+      timeline.q = placed.spec->home;
+      timeline.points.push_back({0, timeline.q});
+      timelines_.push_back(std::move(timeline));
+    }
+    for (const core::ObjectSpec& object : world_.objects) {
+      ObjectState state;
+      state.X_WO = object.X_WO;
+      objects_.push_back(state);
+    }
+  }
+
+  void run(const Statement& s) {
+    Timeline& timeline = timelines_[s.robot];
+    switch (s.verb) {
+      case Verb::kPick:
+        pick(s);
+        break;
+      case Verb::kPlace:
+        place(s);
+        break;
+      case Verb::kHand:
+        handoff(s);
+        break;
+      case Verb::kWait:
+        timeline.t += static_cast<Millis>(std::llround(s.seconds * 1000.0));
+        break;
+      case Verb::kMoveHome:
+        moveTo(s, world_.robots[s.robot].home);
+        break;
+      case Verb::kMoveTo:
+        moveTo(s, s.q);
+        break;
+      case Verb::kOpen:
+        command(s.robot, timeline.t, GripperAction::kOpen);
+        if (timeline.held >= 0) {  // dropped where it is: nobody knows where it lands
+          objects_[timeline.held].holder = -1;
+          objects_[timeline.held].lost = true;
+          timeline.held = -1;
+        }
+        timeline.t += ceilMillis(settings_.gripper_dwell);
+        break;
+      case Verb::kClose:
+        command(s.robot, timeline.t, GripperAction::kClose);
+        timeline.t += ceilMillis(settings_.gripper_dwell);
+        break;
+      case Verb::kStay:
+        timeline.stays = true;
+        break;
+    }
+  }
+
+  core::Plan finish(const std::string& script_name, std::size_t statements) {
+    for (std::size_t r = 0; r < robots_.size(); ++r) {
+      Timeline& timeline = timelines_[r];
+      if (timeline.stays) continue;
+      Chain chain(robots_[r], settings_, timeline.q);
+      chain.jointToConfig(world_.robots[r].home);
+      commit(static_cast<int>(r), chain, timeline.t);
+    }
+    core::Plan plan;
+    plan.world = world_.name;
+    plan.seed = 0;
+    for (std::size_t r = 0; r < robots_.size(); ++r) {
+      core::RobotTrajectory trajectory;
+      trajectory.robot = world_.robots[r].name;
+      trajectory.joint_names = robots_[r].joint_names;
+      for (const auto& [t, q] : timelines_[r].points) trajectory.points.push_back({toSeconds(t), q, std::nullopt});
+      plan.trajectories.push_back(std::move(trajectory));
+    }
+    std::stable_sort(gripper_.begin(), gripper_.end(),
+                     [](const core::GripperCommand& a, const core::GripperCommand& b) { return a.t < b.t; });
+    plan.gripper = gripper_;
+    std::stable_sort(actions_.begin(), actions_.end(),
+                     [](const core::PlanAction& a, const core::PlanAction& b) { return a.start < b.start; });
+    plan.actions = actions_;
+    plan.statistics = {{"generator", "dashbed script"}, {"script", script_name}, {"statements", statements}};
+    return plan;
+  }
+
+ private:
+  const std::string& robotName(int r) const { return world_.robots[r].name; }
+  const std::string& objectName(int o) const { return world_.objects[o].name; }
+
+  void command(int r, Millis t, GripperAction action) {
+    gripper_.push_back({robotName(r), toSeconds(t), action, 0.0});
+    timelines_[r].last_command = action;
+  }
+
+  /// Places a chain on robot r's timeline starting at `start`; returns the end time.
+  Millis commit(int r, const Chain& chain, Millis start) {
+    Timeline& timeline = timelines_[r];
+    for (const Chain::Move& move : chain.moves()) {
+      const Millis t0 = start + move.start;
+      if (timeline.points.back().first < t0) timeline.points.push_back({t0, timeline.q});
+      timeline.points.push_back({t0 + move.duration, move.q});
+      timeline.q = move.q;
+    }
+    for (const Chain::Grip& grip : chain.grips()) command(r, start + grip.t, grip.action);
+    timeline.t = start + chain.elapsed();
+    return timeline.t;
+  }
+
+  /// The cheapest (shortest) successful chain, or a ScriptError quoting the first failure.
+  template <typename Candidate>
+  const Candidate& best(const std::vector<Candidate>& candidates, const Token& at, const std::string& what) const {
+    const Candidate* chosen = nullptr;
+    for (const Candidate& c : candidates) {
+      if (c.ok() && (chosen == nullptr || c.cost() < chosen->cost())) chosen = &c;
+    }
+    if (chosen == nullptr) {
+      const std::string count = candidates.size() == 1 ? "" : " (tried " + std::to_string(candidates.size()) + " ways; the first fails)";
+      parser_.fail(at, what + ": " + candidates.front().error() + count);
+    }
+    return *chosen;
+  }
+
+  /// TCP pose of a via point above X_WT: its height is the support's plus safe_height plus
+  /// the TCP's height above the bottom of the held object (0 without one).
+  std::optional<Pose> viaAbove(const Pose& X_WT, double support_z, double hold_height) const {
+    const double z = support_z + settings_.safe_height + hold_height;
+    if (z < X_WT.translation().z() + 0.01) return std::nullopt;  // already high enough
+    Pose X_via = X_WT;
+    X_via.translation().z() = z;
+    return X_via;
+  }
+
+  void moveTo(const Statement& s, const ArmConfig& q) {
+    const core::UrArmIk& ik = *robots_[s.robot].placed->ik;
+    for (int j = 0; j < 6; ++j) {
+      if (q[j] < ik.lower()[j] || q[j] > ik.upper()[j]) {
+        parser_.fail(s.verb_token, robots_[s.robot].joint_names[j] + " at " + fixed(q[j], 4) + " rad is outside its limits [" +
+                                       fixed(ik.lower()[j], 4) + ", " + fixed(ik.upper()[j], 4) + "] rad");
+      }
+    }
+    Chain chain(robots_[s.robot], settings_, timelines_[s.robot].q);
+    chain.jointToConfig(q);
+    commit(s.robot, chain, timelines_[s.robot].t);
+  }
+
+  // -- pick --
+
+  struct PickCandidate {
+    Chain chain;
+    Pose X_OT;
+    Millis descent_start = 0, grasp = 0, lift_end = 0;
+    bool ok() const { return chain.ok(); }
+    Millis cost() const { return chain.elapsed(); }
+    const std::string& error() const { return chain.error(); }
+  };
+
+  void pick(const Statement& s) {
+    const int r = s.robot, o = s.object;
+    Timeline& timeline = timelines_[r];
+    ObjectState& object = objects_[o];
+    const core::ObjectSpec& spec = world_.objects[o];
+    const std::string& robot = robotName(r);
+    if (timeline.held == o) parser_.fail(s.object_token, robot + " already holds " + spec.name);
+    if (timeline.held >= 0) {
+      parser_.fail(s.object_token, robot + " already holds " + objectName(timeline.held) + "; place it or hand it over before picking " + spec.name);
+    }
+    if (object.holder >= 0) parser_.fail(s.object_token, spec.name + " is held by " + robotName(object.holder));
+    if (object.lost) parser_.fail(s.object_token, spec.name + " was dropped in the air by a bare 'opens'; its pose is unknown");
+    const UprightFrame upright = uprightFrame(object.X_WO.linear(), spec.size);
+    if (upright.tilt > 0.1) parser_.fail(s.object_token, spec.name + " does not rest on a face (tilted " + fixed(upright.tilt, 2) + " rad)");
+
+    const core::GraspApproach approach = s.side ? core::GraspApproach::kSide : core::GraspApproach::kTop;
+    const std::string how = s.side ? "from the side" : "from above";
+    Pose X_OU = Pose::Identity();
+    X_OU.linear() = upright.R_OU;
+    const double bottom_z = object.X_WO.translation().z() - upright.size_U.z() / 2;
+
+    std::vector<PickCandidate> candidates;
+    for (const core::BoxGrasp& grasp : core::boxGrasps(upright.size_U)) {
+      if (grasp.approach != approach) continue;
+      PickCandidate c{Chain(robots_[r], settings_, timeline.q), Pose::Identity(), 0, 0, 0};
+      c.X_OT = Eigen::Translation3d(s.offset) * X_OU * grasp.X_OT;
+      const Pose X_WT = object.X_WO * c.X_OT;
+      const Eigen::Vector3d approach_W = X_WT.linear().col(2);
+      const Pose X_pre = shifted(X_WT, -settings_.cartesian_distance * approach_W);
+      const double hold_height = X_WT.translation().z() - bottom_z;
+      if (const auto X_via = viaAbove(X_pre, bottom_z, 0.0)) c.chain.jointTo(*X_via, "via point above " + spec.name);
+      c.chain.jointTo(X_pre, "pre-grasp pose of " + spec.name);
+      c.descent_start = c.chain.elapsed();
+      c.chain.straight(settings_.cartesian_distance * approach_W, "approach to " + spec.name);
+      c.grasp = c.chain.elapsed();
+      c.chain.grip(GripperAction::kClose);
+      c.chain.dwell(ceilMillis(settings_.gripper_dwell));
+      c.chain.straight(settings_.cartesian_distance * kUp, "lift of " + spec.name);
+      c.lift_end = c.chain.elapsed();
+      if (const auto X_via = viaAbove(c.chain.tcp(), bottom_z, hold_height)) c.chain.jointTo(*X_via, "via point above " + spec.name);
+      candidates.push_back(std::move(c));
+    }
+    if (candidates.empty()) {
+      parser_.fail(s.object_token, "no grasp of " + spec.name + " " + how + " (box " + vec(upright.size_U * 1000.0, 0) +
+                                       " mm): faces wider than the Hand-E opening (" + fixed(core::kHandeMaxOpening * 1000.0, 0) +
+                                       " mm less clearance)" + (s.side ? " or too low for the gripper body to clear the surface" : ""));
+    }
+    const PickCandidate& c = best(candidates, s.object_token, robot + " cannot pick " + spec.name + " " + how);
+
+    const Millis start = std::max(timeline.t, object.available);
+    if (timeline.last_command != GripperAction::kOpen) command(r, start, GripperAction::kOpen);  // open on the way
+    commit(r, c.chain, start);
+    actions_.push_back({core::ActionType::kPick, robot, "", spec.name, "", toSeconds(start + c.descent_start),
+                        toSeconds(start + c.lift_end)});
+    timeline.held = o;
+    timeline.X_OT = c.X_OT;
+    object.holder = r;
+  }
+
+  // -- place --
+
+  void place(const Statement& s) {
+    const int r = s.robot, o = s.object;
+    Timeline& timeline = timelines_[r];
+    ObjectState& object = objects_[o];
+    const core::ObjectSpec& spec = world_.objects[o];
+    const std::string& robot = robotName(r);
+    if (timeline.held != o) {
+      parser_.fail(s.object_token, robot + " does not hold " + spec.name +
+                                       (object.holder >= 0 ? " (" + robotName(object.holder) + " does)" : ""));
+    }
+    // where the object is now, as carried by the robot
+    const Pose X_WO_now = robots_[r].placed->tcpPoseInWorld(timeline.q) * timeline.X_OT.inverse();
+    const UprightFrame upright = uprightFrame(X_WO_now.linear(), spec.size);
+    const Eigen::Matrix3d R_UO = upright.R_OU.transpose();
+    // the object keeps the face it shows downwards and turns about the vertical into line
+    // with the region (or the world axes); the TCP follows through the held grasp
+    const core::Region* region = s.region >= 0 ? &world_.regions[s.region] : nullptr;
+    const double height = upright.size_U.z();
+    const double region_yaw = region != nullptr ? std::atan2(region->X_WR.linear()(1, 0), region->X_WR.linear()(0, 0)) : 0.0;
+    const Eigen::Vector3d p_WO = region != nullptr
+                                     ? Eigen::Vector3d(region->X_WR * Eigen::Vector3d(0, 0, height / 2 + settings_.drop_height))
+                                     : *s.at;
+    const double support_z = p_WO.z() - height / 2 - (region != nullptr ? settings_.drop_height : 0.0);
+
+    struct PlaceCandidate {
+      Chain chain;
+      Pose X_WO;
+      Millis descent_start = 0, release = 0, retreat_end = 0;
+      bool fits = true;
+      bool ok() const { return chain.ok(); }
+      Millis cost() const { return chain.elapsed(); }
+      const std::string& error() const { return chain.error(); }
+    };
+    std::vector<PlaceCandidate> candidates;
+    for (int k = 0; k < 4; ++k) {
+      PlaceCandidate c{Chain(robots_[r], settings_, timeline.q), Pose::Identity(), 0, 0, 0, true};
+      c.X_WO.linear() = yawRotation(region_yaw + k * std::numbers::pi / 2) * R_UO;
+      c.X_WO.translation() = p_WO;
+      if (region != nullptr) {
+        const Eigen::Vector2d footprint = k % 2 == 0 ? upright.size_U.head<2>() : Eigen::Vector2d(upright.size_U.y(), upright.size_U.x());
+        c.fits = footprint.x() <= region->size.x() && footprint.y() <= region->size.y();
+      }
+      const Pose X_WT = c.X_WO * Eigen::Translation3d(s.offset) * timeline.X_OT;  // offset: release beside the spot
+      const Pose X_pre = shifted(X_WT, settings_.cartesian_distance * kUp);
+      const double hold_height = X_WT.translation().z() - support_z;
+      if (const auto X_via = viaAbove(X_pre, support_z, hold_height)) c.chain.jointTo(*X_via, "via point above the placement");
+      c.chain.jointTo(X_pre, "pose above the placement");
+      c.descent_start = c.chain.elapsed();
+      c.chain.straight(-settings_.cartesian_distance * kUp, "descent to the placement");
+      c.release = c.chain.elapsed();
+      c.chain.grip(GripperAction::kOpen);
+      c.chain.dwell(ceilMillis(settings_.gripper_dwell));
+      c.chain.straight(settings_.cartesian_distance * kUp, "retreat from the placement");
+      c.retreat_end = c.chain.elapsed();
+      if (const auto X_via = viaAbove(c.chain.tcp(), support_z, 0.0)) c.chain.jointTo(*X_via, "via point above the placement");
+      candidates.push_back(std::move(c));
+    }
+    // orientations whose footprint fits the region first
+    if (std::any_of(candidates.begin(), candidates.end(), [](const PlaceCandidate& c) { return c.fits; })) {
+      std::erase_if(candidates, [](const PlaceCandidate& c) { return !c.fits; });
+    }
+    const std::string where = region != nullptr ? "in " + region->name : "at " + vec(p_WO) + " m";
+    const PlaceCandidate& c = best(candidates, s.object_token, robot + " cannot place " + spec.name + " " + where);
+
+    const Millis start = timeline.t;
+    commit(r, c.chain, start);
+    // judged in the region named, or the one containing an explicit position; elsewhere as an
+    // object set aside (a place without a region: at rest on a stable surface)
+    const core::Region* judged = region;
+    for (std::size_t g = 0; g < world_.regions.size() && judged == nullptr; ++g) {
+      const core::Region& candidate = world_.regions[g];
+      core::Box volume;
+      volume.X_WB = candidate.X_WR * Eigen::Translation3d(0, 0, candidate.size.z() / 2);
+      volume.size = candidate.size;
+      if (core::pointInBox(p_WO, volume)) judged = &candidate;
+    }
+    actions_.push_back({core::ActionType::kPlace, robot, "", spec.name, judged != nullptr ? judged->name : "",
+                        toSeconds(start + c.descent_start), toSeconds(start + c.retreat_end)});
+    object.X_WO = c.X_WO * Eigen::Translation3d(s.offset);
+    if (region != nullptr) object.X_WO.translation().z() -= settings_.drop_height;  // it settles on the floor
+    object.holder = -1;
+    object.available = start + c.retreat_end;
+    timeline.held = -1;
+  }
+
+  // -- handoff --
+
+  /// True when the two grippers stay clear by finger_clearance: the giver at q_giver with its
+  /// fingers at finger_giver [m each], the receiver at each of receiver_qs with finger_receiver.
+  bool grippersClear(int giver, const ArmConfig& q_giver, double finger_giver, int receiver,
+                     const std::vector<ArmConfig>& receiver_qs, double finger_receiver, std::string& touching) const {
+    const auto boxes = [&](int r, const ArmConfig& q, double finger) {
+      const RobotContext& robot = robots_[r];
+      const core::RobotModel& model = *robot.placed->model;
+      Eigen::VectorXd q_all = Eigen::VectorXd::Constant(model.numPositions(), finger);
+      for (int j = 0; j < 6; ++j) q_all[j] = q[j];
+      const std::vector<Pose> X_RL = core::linkPoses(model, q_all);
+      std::vector<std::pair<std::string, core::Box>> result;
+      for (const int link : robot.gripper_links) {
+        for (const core::CollisionShape& shape : model.links()[link].collisions) {
+          core::Box box;
+          box.X_WB = robot.placed->spec->X_WBase * X_RL[link] * shape.X_LS;
+          box.size = shape.type == core::ShapeType::kBox ? shape.size : Eigen::Vector3d(2 * shape.size.x(), 2 * shape.size.y(), shape.size.z());
+          box.size += Eigen::Vector3d::Constant(settings_.finger_clearance);  // half the gap on each part's every side
+          result.push_back({robotName(r) + " " + model.links()[link].name + (shape.name.empty() ? "" : "/" + shape.name), box});
+        }
+      }
+      return result;
+    };
+    const auto giver_boxes = boxes(giver, q_giver, finger_giver);
+    for (const ArmConfig& q : receiver_qs) {
+      for (const auto& [receiver_name, receiver_box] : boxes(receiver, q, finger_receiver)) {
+        for (const auto& [giver_name, giver_box] : giver_boxes) {
+          if (core::boxesOverlap(receiver_box, giver_box)) {
+            touching = receiver_name + " and " + giver_name;
+            return false;
+          }
+        }
+      }
+    }
+    return true;
+  }
+
+  struct HandoffCandidate {
+    Chain giver_in, receiver_in;    // to the handoff pose / to the pre-approach pose
+    Chain receiver_grasp;           // approach, close
+    Chain giver_out;                // retreat (after the giver opened)
+    Chain receiver_out;             // retreat
+    Chain giver_home;
+    Pose X_OT_receiver;
+    std::string collision;
+    bool ok() const {
+      return giver_in.ok() && receiver_in.ok() && receiver_grasp.ok() && giver_out.ok() && receiver_out.ok() &&
+             giver_home.ok() && collision.empty();
+    }
+    Millis cost() const {
+      return std::max(giver_in.elapsed(), receiver_in.elapsed()) + receiver_grasp.elapsed() + giver_out.elapsed() +
+             std::max(receiver_out.elapsed(), giver_home.elapsed());
+    }
+    const std::string& error() const {
+      for (const Chain* c : {&giver_in, &receiver_in, &receiver_grasp, &giver_out, &receiver_out, &giver_home}) {
+        if (!c->ok()) return c->error();
+      }
+      return collision;
+    }
+  };
+
+  void handoff(const Statement& s) {
+    const int g = s.robot, r = s.receiver, o = s.object;
+    Timeline& giver = timelines_[g];
+    Timeline& receiver = timelines_[r];
+    const core::ObjectSpec& spec = world_.objects[o];
+    const std::string& giver_name = robotName(g);
+    const std::string& receiver_name = robotName(r);
+    if (giver.held != o) {
+      parser_.fail(s.object_token, giver_name + " does not hold " + spec.name +
+                                       (objects_[o].holder >= 0 ? " (" + robotName(objects_[o].holder) + " does)" : ""));
+    }
+    if (receiver.held >= 0) {
+      parser_.fail(s.object_token, receiver_name + " already holds " + objectName(receiver.held) + " and cannot receive " + spec.name);
+    }
+    // the handoff point: the middle of the robots' handoff zone (the planner's), handoff_height up
+    const Eigen::Vector3d p_g = world_.robots[g].X_WBase.translation(), p_r = world_.robots[r].X_WBase.translation();
+    Eigen::Vector3d along = p_r - p_g;
+    along.z() = 0.0;
+    if (along.norm() < 1e-6) parser_.fail(s.verb_token, giver_name + " and " + receiver_name + " stand at the same place");
+    along.normalize();
+    const Eigen::Vector3d across = kUp.cross(along);
+    const std::optional<core::HandoffZone> zone = core::handoffZone(world_, *robots_[g].placed, *robots_[r].placed);
+    if (!zone) {
+      parser_.fail(s.verb_token, giver_name + " and " + receiver_name +
+                                     " have no handoff zone: no place near them both reach, clear of the fixtures");
+    }
+    const Eigen::Vector3d p_WO(zone->mid.x(), zone->mid.y(), zone->top + settings_.handoff_height);
+    const std::string where = "at " + vec(p_WO) + " m";
+
+    // Geometry (giver top-grasps, object frame O): the giver turns its approach axis
+    // horizontal, pointing at the receiver, fingers on the faces normal to `across` (O's
+    // closing faces); the receiver comes straight down and closes along `along`, on the two
+    // faces normal to the giver's approach (O's top and bottom), so it can later place the
+    // object from above, lying on a side face. The receiver's fingers (29.2 mm wide) pass
+    // between the giver's (the object's width apart: 40 mm for a cube), their open outer
+    // face (25 + 17.4 mm from the centre) stays short of the giver's housing face (46.4 mm
+    // behind the centre), and the giver's fingers (29.2 mm wide, vertical) stay below the
+    // receiver's housing (46.4 mm above). grippersClear checks this on the URDF boxes.
+    std::vector<HandoffCandidate> candidates;
+    for (const double giver_sign : {1.0, -1.0}) {
+      for (const double receiver_sign : {1.0, -1.0}) {
+        HandoffCandidate c{Chain(robots_[g], settings_, giver.q), Chain(robots_[r], settings_, receiver.q),
+                           Chain(robots_[r], settings_, receiver.q), Chain(robots_[g], settings_, giver.q),
+                           Chain(robots_[r], settings_, receiver.q), Chain(robots_[g], settings_, giver.q),
+                           Pose::Identity(), ""};
+        Pose X_WT_g = Pose::Identity();
+        X_WT_g.linear() << giver_sign * across, along.cross(giver_sign * across), along;
+        Pose X_WO = Pose::Identity();
+        X_WO.linear() = X_WT_g.linear() * giver.X_OT.linear().transpose();
+        X_WO.translation() = p_WO;
+        X_WT_g = X_WO * giver.X_OT;
+        Pose X_WT_r = Pose::Identity();
+        X_WT_r.linear() << receiver_sign * along, (-kUp).cross(receiver_sign * along), -kUp;
+        X_WT_r.translation() = p_WO;
+        c.X_OT_receiver = X_WO.inverse() * X_WT_r;
+
+        c.giver_in.jointTo(X_WT_g, "handoff pose of " + giver_name);
+        c.receiver_in.jointTo(shifted(X_WT_r, settings_.cartesian_distance * kUp), "pre-approach pose of " + receiver_name);
+        c.receiver_grasp = Chain(robots_[r], settings_, c.receiver_in.q());
+        c.receiver_grasp.straight(-settings_.cartesian_distance * kUp, "approach of " + receiver_name);
+        c.giver_out = Chain(robots_[g], settings_, c.giver_in.q());
+        c.giver_out.straight(-settings_.cartesian_distance * along, "retreat of " + giver_name);
+        c.receiver_out = Chain(robots_[r], settings_, c.receiver_grasp.q());
+        c.receiver_out.straight(settings_.cartesian_distance * kUp, "retreat of " + receiver_name);
+        c.giver_home = Chain(robots_[g], settings_, c.giver_out.q());
+        c.giver_home.jointToConfig(world_.robots[g].home);
+        if (c.ok()) {
+          const double width_giver = extentAlong(X_WO.linear(), spec.size, X_WT_g.linear().col(0));
+          const double width_receiver = extentAlong(X_WO.linear(), spec.size, along);
+          std::vector<ArmConfig> approach = c.receiver_grasp.waypoints();
+          approach.insert(approach.begin(), c.receiver_in.q());
+          std::string touching;
+          // receiver coming down open / closed on the object, giver still closed
+          bool clear = grippersClear(g, c.giver_in.q(), width_giver / 2, r, approach, core::kHandeMaxOpening / 2, touching) &&
+                       grippersClear(g, c.giver_in.q(), width_giver / 2, r, {c.receiver_grasp.q()}, width_receiver / 2, touching);
+          // giver opening and retreating while the receiver holds
+          std::vector<ArmConfig> giver_path = c.giver_out.waypoints();
+          giver_path.insert(giver_path.begin(), c.giver_in.q());
+          for (std::size_t i = 0; clear && i < giver_path.size(); ++i) {
+            clear = grippersClear(r, c.receiver_grasp.q(), width_receiver / 2, g, {giver_path[i]}, core::kHandeMaxOpening / 2, touching);
+          }
+          if (!clear) c.collision = "the grippers would come closer than " + fixed(settings_.finger_clearance * 1000.0, 1) + " mm (" + touching + ")";
+          if (width_receiver > core::kHandeMaxOpening - 0.005) {
+            c.collision = spec.name + " is " + fixed(width_receiver * 1000.0, 1) + " mm long along the handoff line, too wide for " +
+                          receiver_name + "'s Hand-E (opening " + fixed(core::kHandeMaxOpening * 1000.0, 0) + " mm)";
+          }
+        }
+        candidates.push_back(std::move(c));
+      }
+    }
+    const HandoffCandidate& c = best(candidates, s.object_token, giver_name + " cannot hand " + spec.name + " to " + receiver_name + " " + where);
+
+    // both arrive together once both are free
+    const Millis free = std::max(giver.t, receiver.t);
+    const Millis arrive = free + std::max(c.giver_in.elapsed(), c.receiver_in.elapsed());
+    if (receiver.last_command != GripperAction::kOpen) command(r, arrive - c.receiver_in.elapsed(), GripperAction::kOpen);
+    commit(g, c.giver_in, arrive - c.giver_in.elapsed());
+    commit(r, c.receiver_in, arrive - c.receiver_in.elapsed());
+    const Millis grasped = commit(r, c.receiver_grasp, arrive);
+    command(r, grasped, GripperAction::kClose);
+    const Millis opened = grasped + ceilMillis(settings_.gripper_dwell);  // both hold: the overlap
+    command(g, opened, GripperAction::kOpen);
+    const Millis released = opened + ceilMillis(settings_.gripper_dwell);
+    const Millis giver_clear = commit(g, c.giver_out, released);
+    commit(r, c.receiver_out, giver_clear);
+    commit(g, c.giver_home, giver_clear);
+    actions_.push_back({core::ActionType::kHandoff, giver_name, receiver_name, spec.name, "", toSeconds(arrive), toSeconds(giver_clear)});
+    giver.held = -1;
+    receiver.held = o;
+    receiver.X_OT = c.X_OT_receiver;
+    objects_[o].holder = r;
+  }
+
+  const core::World& world_;
+  const ScriptSettings& settings_;
+  const ScriptParser& parser_;
+  std::vector<RobotContext> robots_;
+  std::vector<Timeline> timelines_;
+  std::vector<ObjectState> objects_;
+  std::vector<core::GripperCommand> gripper_;
+  std::vector<core::PlanAction> actions_;
+};
+
+}  // namespace
+
+core::Plan planFromScript(const core::LoadedWorld& world, std::string_view script, const std::string& script_name,
+                          const ScriptSettings& settings) {
+  const ScriptParser parser(*world.world, script_name);
+  const std::vector<Statement> statements = parser.parse(script);
+  ScriptPlanner planner(world, settings, parser);
+  for (const Statement& statement : statements) planner.run(statement);
+  return planner.finish(script_name, statements.size());
+}
+
+}  // namespace dashbed::tools
