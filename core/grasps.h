@@ -15,9 +15,11 @@ namespace dashbed::core {
 /// The opening a grasp keeps to spare around the box, and the fingertips above the surface [m].
 inline constexpr double kGraspClearance = 0.005;
 /// How far the fingertips reach beyond the TCP along the approach axis: tip end 145.5 mm vs
-/// TCP 132.5 mm from the Hand-E mounting face (reference file, S4/S6).
+/// TCP 132.5 mm from the Hand-E mounting face (Robotiq Hand-E ROS 2 description,
+/// github.com/robotiq/ros; github.com/AGH-CEAI/robotiq_hande_description).
 inline constexpr double kFingertipBeyondTcp = 0.013;
-/// Half the Hand-E body's width (75 mm envelope, S5): from the side, the body passes this far
+/// Half the Hand-E body's width (75 mm envelope, Robotiq's Hand-E Isaac Sim assets,
+/// github.com/robotiq/isaacsim_assets): from the side, the body passes this far
 /// below the TCP.
 inline constexpr double kHandeBodyHalfWidth = 0.0375;
 

@@ -129,7 +129,7 @@ Box segmentBox(const Eigen::Vector3d& p, const Eigen::Vector3d& q, double width)
 }
 
 // A robot cannot grasp anything farther than this from its base [m]: the UR5e's reach of
-// 0.85 m (shoulder to flange, ../shared/reference/ur5e_hande.yaml) plus its shoulder height and
+// 0.85 m (shoulder to flange, UR5e datasheet) plus its shoulder height and
 // the Hand-E's length, rounded up. Only spares IK calls that would fail.
 constexpr double kGraspBound = 1.2;
 

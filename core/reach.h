@@ -45,9 +45,13 @@ namespace dashbed::core {
 /// bases: object centres within `spread` of the zone's middle along and across the line, from
 /// `min_height` to `max_height` above the zone's reference height.
 struct HandoffShape {
-  double min_height = 0.15;  ///< [m]
-  double max_height = 0.45;  ///< [m]
-  double spread = 0.10;      ///< [m]
+  /// Lowest object-centre height of the zone above its reference height (the higher base, for
+  /// the box over the bases' midpoint) [m].
+  double min_height = 0.15;
+  /// Highest object-centre height of the zone above that reference height [m].
+  double max_height = 0.45;
+  /// Half-width of the zone along and across the line between the two bases [m].
+  double spread = 0.10;
 };
 
 /// Where two robots hand objects over: the HandoffShape box around `mid`, its heights counted

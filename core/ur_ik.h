@@ -28,7 +28,7 @@ struct UrDhParameters {
   double d6;
 };
 
-/// UR5e, from Universal Robots' published DH table (reference file, source S1).
+/// UR5e, from Universal Robots' published DH table (UR's DH-parameters page, universal-robots.com).
 inline constexpr UrDhParameters kUr5eDh{0.1625, -0.425, -0.3922, 0.1333, 0.0997, 0.0996};
 
 /// T_06: pose of tool0 in the DH base frame.

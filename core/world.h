@@ -128,7 +128,7 @@ struct PhysicsSettings {
 /// + c(q, qd) + g(q), clamped to the effort limits, so the gains are per-joint accelerations:
 /// kp = w^2 and kd = 2 zeta w for a closed-loop natural frequency w. The defaults (w = 40 rad/s,
 /// critically damped) keep w * time_step << 1 at 1 kHz and the tracking error at the UR5e's
-/// top joint speed far below a millimetre at the TCP (tests/controllers).
+/// top joint speed far below a millimetre at the TCP (tests/sim/test_simulation.cpp).
 struct ControllerSettings {
   std::array<double, 6> kp{1600.0, 1600.0, 1600.0, 1600.0, 1600.0, 1600.0};  ///< [1/s^2]
   std::array<double, 6> kd{80.0, 80.0, 80.0, 80.0, 80.0, 80.0};              ///< [1/s]

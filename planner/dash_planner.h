@@ -1,6 +1,6 @@
 #pragma once
-// The DaSH planner for multi-manipulator rearrangement (paper: Method > Overview, Alg. 3):
-// build the task-space hypergraph (Alg. 1) and the motion hypergraph (Alg. 2), query a task
+// The DaSH planner for multi-manipulator rearrangement (paper: Method > Overview, Alg. 1):
+// build the task-space hypergraph (Alg. 2) and the motion hypergraph (Alg. 3), query a task
 // plan on the transition-extended hypergraph (Alg. 4), resolve conflicts (scheduled CBS), and
 // expand the representation by a round when that fails. A conflict that conflict resolution
 // cannot order becomes a scheduling constraint on the pair of transitions involved, and the

@@ -21,6 +21,13 @@ std::uint64_t greedySearchExpansions(const PlannerSettings& settings, QueryMode 
 
 void validate(const PlannerSettings& settings) {
   if (settings.max_rounds < 1) throw std::invalid_argument("planner settings: max_rounds: must be >= 1");
+  if (settings.search_expansions < 1 || settings.constrained_search_expansions < 1) {
+    throw std::invalid_argument("planner settings: search_expansions, constrained_search_expansions: must be >= 1");
+  }
+  if (settings.next_best_plans < 1) throw std::invalid_argument("planner settings: next_best_plans: must be >= 1");
+  if (settings.scheduling_constraints_per_round < 0) {
+    throw std::invalid_argument("planner settings: scheduling_constraints_per_round: must be >= 0");
+  }
   if (settings.sequential_fallback_rounds < 0) {
     throw std::invalid_argument("planner settings: sequential_fallback_rounds: must be >= 0");
   }

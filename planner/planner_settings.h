@@ -15,83 +15,70 @@ namespace dashbed::planner {
 
 enum class Method { kGreedy, kOptimal };
 
-/// The greedy queries' conflict-resolution focal weight (ConflictResolutionBudget::focal_weight):
-/// Greedy plans 2-7 times faster on the paper's 4-robot worlds than with best first (1), its
-/// makespans 1.5 % longer on average (README, Greedy's conflict resolution).
+/// Default of PlannerSettings::conflict_focal_weight: resolves in fewer nodes than best first
+/// (1), for slightly longer schedules.
 inline constexpr double kGreedyConflictFocalWeight = 1.1;
 
 struct PlannerSettings {
+  /// Greedy-MM-DaSH (kGreedy: first resolved plan) or MM-DaSH (kOptimal: Next-Best Search from
+  /// Greedy's plan; never longer, several times slower).
   Method method = Method::kGreedy;
+  /// Seed of handoff draws and roadmap sampling; the plan is a function of world, settings and seed.
   std::uint64_t seed = 1;
-  int max_rounds = 30;                        ///< representation expansions before giving up
-  std::uint64_t search_expansions = 20000;    ///< per hyperpath query
-  /// per greedy query while scheduling constraints are in force, and per query keeping clear
-  /// of the robots waiting at home (sequential, QueryMode::kParkClearOfHomes), in round 1,
-  /// doubling every round up to search_expansions (or twice what the last query without
-  /// constraints took, when more): a depth-first search they (or the robots waiting) steer into
-  /// a corner backtracks long, and the next round may do without them; but a round that drops
-  /// them meets the same conflicts again, so each round lets the constrained search look
-  /// further
+  /// Rounds of representation expansion before solve() stops with a timeout (>= 1); more can
+  /// solve harder worlds but take longer to report failure.
+  int max_rounds = 30;
+  /// Histories one hyperpath query may expand without scheduling constraints (Next-Best Search:
+  /// per task plan it takes); also caps constrained_search_expansions. Higher backtracks further,
+  /// slower.
+  std::uint64_t search_expansions = 20000;
+  /// Round-1 expansion cap of greedy queries under scheduling constraints or keeping clear of idle
+  /// robots; doubles per round, >= 2x the last unconstrained query, <= search_expansions.
   std::uint64_t constrained_search_expansions = 1000;
-  /// per conflict resolution (a sequential plan gets up to three: its steps one after
-  /// another, then overlapping in the task plan's order and depth first along time)
+  /// High-level nodes per conflict resolution (all but the second try's along-time and depth-first
+  /// passes); more resolve more plans but spend longer on each that fails.
   int conflict_nodes = 500;
-  /// per conflict resolution of the second try's depth first along time (see
-  /// conflict_reroutes_retry): it resolves the schedule's conflicts one after another along
-  /// time, so a crowded plan needs more nodes, not a wider search (a ring of 6 robots with 18
-  /// random cubes: with 500 none of its tries got further than 158 s along its schedule, and
-  /// the sequential plan of 259 s was returned; with 2000 round 2 resolves one in 958 nodes,
-  /// 172 s)
+  /// High-level nodes of the second try's along-time pass (NodeOrder::kAlongTime); it resolves
+  /// conflicts one after another, so crowded plans need many nodes. More: slower failures.
   int conflict_nodes_along_time = 2000;
-  /// per conflict resolution of the second try's depth-first pass (NodeOrder::kDepthFirst), on
-  /// the shortest of the round's failed direct task plans once best first and along time
-  /// failed on it (see conflict_reroutes_retry)
+  /// High-level nodes of the second try's depth-first pass (NodeOrder::kDepthFirst), run on the
+  /// shortest failed direct plan after best first and along time; more: slower failures.
   int conflict_nodes_depth_first = 4000;
-  /// The focal weight (ConflictResolutionBudget::focal_weight, >= 1) of the conflict
-  /// resolution of the greedy queries' task plans (Greedy's, and MM-DaSH's until it has
-  /// Greedy's plan); Next-Best Search's are resolved best first (1: the shortest first).
+  /// Focal weight (>= 1) of the conflict resolution of greedy task plans; Next-Best Search uses 1.
+  /// Above 1: fewer nodes, schedules up to that factor longer than the shortest open node.
   double conflict_focal_weight = kGreedyConflictFocalWeight;
-  /// Detours and parkings each conflict resolution may search its roadmaps for
-  /// (ConflictResolutionBudget::max_reroutes). Few: a task plan whose robots only get past each
-  /// other by many reroutes has a long schedule, and its failure feeds a scheduling constraint
-  /// back to the task search, which often finds a better plan.
+  /// Detour and parking roadmap searches per conflict resolution (as many again below a fold);
+  /// fewer hand hard conflicts back to the task search sooner, more rescue long schedules.
   int conflict_reroutes = 24;
-  /// In the rounds after a fallback plan was found (sequential_fallback_rounds), when none
-  /// of a round's direct task plans resolves, the three of them with the shortest optimistic
-  /// makespans are resolved again with this many reroutes, for a schedule shorter than the
-  /// fallback's (no constraints fed back; not above conflict_reroutes: no second try):
-  /// each best first and, where that fails, along time (NodeOrder::kAlongTime, with
-  /// conflict_nodes_along_time nodes), the shortest then also depth first
-  /// (conflict_nodes_depth_first) before the next is tried.
-  /// Not before: a plan resolved with many reroutes may be longer than the sequential one.
+  /// Re-routes of the second try: with a fallback plan in hand, a round's 3 shortest failed direct
+  /// plans are resolved again below its makespan (<= conflict_reroutes: no second try).
   int conflict_reroutes_retry = 96;
-  int next_best_plans = 20;                   ///< task plans tried per round by Next-Best Search
-  /// Scheduling constraints fed back from failed conflict resolutions per round, each followed
-  /// by a new query on the same representation.
+  /// Task plans Next-Best Search takes from one A*-like query (a new query after a scheduling
+  /// constraint counts afresh); more approach the representation's best plan, slower.
+  int next_best_plans = 20;
+  /// Scheduling constraints fed back per round (and per sequential query mode), each followed by
+  /// a new query; more steer the search further, at a query and conflict resolution each.
   int scheduling_constraints_per_round = 6;
-  /// A plan moving one object at a time (the last resort of a round whose other queries all
-  /// failed), or one with the robots parked at home out of every transition's way
-  /// (QueryMode::kParkClearOfHomes), is kept as a fallback: the direct queries go on for this
-  /// many more rounds of expansion, and a plan they find replaces it when shorter.
+  /// Rounds the direct queries go on after a fallback plan (sequential or parked clear of homes);
+  /// a shorter direct plan replaces it. More: shorter plans on crowded worlds, longer planning.
   int sequential_fallback_rounds = 2;
-  /// With a deadline: while there is no plan yet, the direct queries (those before a round's
-  /// sequential one) stop once this share of the time from solve()'s start to the deadline is
-  /// used, leaving the rest to the sequential query (without the scheduling constraints they
-  /// left in force), so that a world too crowded for the direct queries to find a plan in
-  /// time still gets its sequential plan (in (0, 1]; plans found after the cut depend on the
-  /// machine's speed, as any plan at the deadline does).
+  /// With a deadline and no plan yet: share of the time, in (0, 1], the direct queries may use
+  /// before the sequential query; lower secures the fallback, higher favours direct plans.
   double direct_time_share = 0.5;
-  /// Objects standing where another object's every pick reaches over them get set-aside sites
-  /// (ObjectSites::aside), so that they may be set down there for a while: needed where that
-  /// object must go in before them (a shelf item behind one that goes into the slot in front).
+  /// Give set-aside sites to objects standing where another object's every pick reaches over
+  /// them; off keeps the representation smaller but may leave such worlds without a plan.
   bool set_aside = true;
+  /// Construction of the task-space and motion hypergraphs (sampling, roadmaps, timing, collision).
   RepresentationSettings representation;
 };
 
 /// A wall-clock deadline (std::nullopt: none; iteration caps still apply), and where to report
 /// progress (each query, conflict resolution and round, one line each; may be empty).
 struct PlannerBudget {
+  /// Wall-clock deadline of solve() (none: only the iteration caps apply); when it passes, the
+  /// best plan so far is returned (MM-DaSH's anytime plan, or Greedy's fallback).
   std::optional<std::chrono::steady_clock::time_point> deadline;
+  /// Receives one line per query, conflict resolution and round (may be empty).
   std::function<void(const std::string&)> progress;
 };
 

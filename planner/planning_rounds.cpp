@@ -220,8 +220,7 @@ void PlanningRounds::directQueries(int round) {
 // Where they leave no direct plan, once a round: the robots parking at home out of every
 // transition's way, objects relayed around them (its conflicts feed no constraint back: the
 // round's queries are done with them). A fallback: its robots wait for each other at home,
-// where a later round's direct plan may not (4 robots / 16 crossing cubes, seeds 7 and 9:
-// 184.7 and 180.1 s in round 1, direct plans of 175.9 and 173.9 s in round 2).
+// where a later round's direct plan may not, so that plan can be shorter.
 void PlanningRounds::parkedClearOfHomes(int round) {
   if (directPlan() || timeUp()) return;
   const SearchResult greedy = greedyQuery(round, QueryMode::kParkClearOfHomes, HyperpathSearch::Relays::kAroundIdleRobots);
@@ -244,8 +243,8 @@ void PlanningRounds::secondTries() {
       " shortest failed direct task plans, up to " + std::to_string(settings_.conflict_reroutes_retry) +
       " detours and parkings, best first, then along time, the shortest also depth first");
   // any schedule shorter than the fallback's will do: where best first runs out of nodes
-  // (robots meeting again and again, each meeting ordered both ways), along time most often
-  // finds one in a few dozen (NodeOrder::kAlongTime); where the robots crowd so that it goes
+  // (robots meeting again and again, each meeting ordered both ways), along time finds one in
+  // fewer nodes (NodeOrder::kAlongTime); where the robots crowd so that it goes
   // back and forth between orders, depth first gets through, to a longer schedule
   for (std::size_t i = 0; i < failed_direct_.size(); ++i) {
     for (const NodeOrder order : {NodeOrder::kMakespan, NodeOrder::kAlongTime, NodeOrder::kDepthFirst}) {

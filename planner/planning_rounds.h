@@ -1,5 +1,5 @@
 #pragma once
-// The rounds of DaSH's high-level loop (paper: Method > Overview, Alg. 3) on a built
+// The rounds of DaSH's high-level loop (paper: Method > Overview, Alg. 1) on a built
 // representation; solve() (dash_planner.h) builds it and turns the outcome into a plan or a
 // status. Each round, after the first expanding the motion hypergraph:
 //  1. direct queries: Greedy's task plan (idle robots staying where they are, then parking at

@@ -1,5 +1,5 @@
 #pragma once
-// Monitor: the physical checks of a plan's execution (see DESIGN.md "Physical checks").
+// Monitor: the physical checks of a plan's execution (see the README, Physical checks).
 //
 // It observes the simulation after every step and, at the end, judges every planned action:
 //  - pick:    after the close command both finger pads touch the object; at the end of the

@@ -116,7 +116,7 @@ void computeInertia(const core::RobotModel& model, MergedBody& body) {
 // The margin of a shape whose smallest half-extent is `half` [m]: kMargin, but at most a
 // tenth of it. Bullet keeps a box's outer size and shrinks its core by the margin; a core
 // shrunk to nothing (the 2 mm finger pads at 1 mm) yields contact normals in arbitrary
-// directions, and those normals, kept by the persistent manifold for the whole grasp, locked
+// directions, and those normals, kept by the persistent manifold for the whole grasp, lock
 // the fingers against opening.
 double marginFor(double half) { return std::min(kMargin, 0.1 * half); }
 
@@ -187,8 +187,8 @@ struct Simulation::Impl {
   // Bullet keeps a friction-anchored contact point while its friction stays inside the cone
   // (so a static contact does not creep), with its local points fixed but its normal and
   // friction directions stored in world coordinates. A grasped box that turns with the hand
-  // kept the normals of the moment it was grasped: after a quarter turn they pointed along
-  // the pads, and those rows held the fingers shut when the gripper opened. Turning them with
+  // would keep the normals of the moment it was grasped: after a quarter turn they point along
+  // the pads, and those rows hold the fingers shut when the gripper opens. Turning them with
   // body B keeps them fixed in B's frame, as the points are.
   std::vector<btMatrix3x3> last_basis;  // per collision object (user index), at the last step
 
@@ -331,7 +331,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
         robot.body->setupPrismatic(k, child.mass, toBt(child.inertia_diag), parent_body - 1, rot_parent_to_this, axis,
                                    pivot_in_parent, pivot_to_com, true);
       }
-      // no artificial damping or friction in the joints (the UR description has none, S2)
+      // no artificial damping or friction in the joints (UR's ROS 2 description has none)
       robot.body->getLink(k).m_jointDamping = 0.0;
       robot.body->getLink(k).m_jointFriction = 0.0;
     }

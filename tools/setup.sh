@@ -30,6 +30,7 @@ packages=(
   libosmesa6-dev libpng-dev                 # offscreen rendering, PNG frames
   ffmpeg                                    # MP4 video (ffprobe in the tests)
   catch2                                    # tests (Catch2 v2)
+  python3                                   # tests: the folder map check
   libopenmpi-dev openmpi-bin                # stress campaigns across machines (mpirun)
 )
 missing=()

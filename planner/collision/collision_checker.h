@@ -79,11 +79,18 @@ namespace dashbed::planner {
 
 /// Settings of the collision checker. Lengths in metres.
 struct CollisionSettings {
-  double margin = 0.0015;      ///< every moving shape (robot links, held objects) grows by this [m]
-  double motion_step = 0.003;  ///< max travel of any robot point between two motion samples [m]
-  int self_pair_samples = 1000;            ///< random configurations for the self-collision pairs
-  double self_pair_always_fraction = 0.95;  ///< body pairs colliding this often are ignored
-  std::uint64_t self_pair_seed = 1;         ///< seed of those samples
+  /// Growth of every moving shape (robot links, held objects) [m]; larger is safer and rules out
+  /// close handoffs.
+  double margin = 0.0015;
+  /// Largest travel of any robot point between two motion samples [m]; checks miss nothing while
+  /// it is <= 2 x margin.
+  double motion_step = 0.003;
+  /// Random configurations used to find the body pairs that always collide (ignored pairs).
+  int self_pair_samples = 1000;
+  /// Body pairs colliding in at least this fraction of those configurations are ignored, in (0, 1].
+  double self_pair_always_fraction = 0.95;
+  /// Seed of those configurations.
+  std::uint64_t self_pair_seed = 1;
 
   /// Throws std::invalid_argument naming the field when a value is out of range (margin < 0,
   /// motion_step <= 0, samples < 0, fraction outside (0, 1]).

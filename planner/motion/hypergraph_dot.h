@@ -16,6 +16,7 @@
 namespace dashbed::planner {
 
 struct DotOptions {
+  /// Name of the DOT graph.
   std::string graph_name = "task_space_hypergraph";
   bool label_hyperarcs = true;  ///< write the action name next to each hyperarc node
   bool left_to_right = true;    ///< rankdir=LR, else top to bottom

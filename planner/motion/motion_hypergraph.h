@@ -1,5 +1,5 @@
 #pragma once
-// The motion hypergraph H_M of the DaSH method (paper: Method > Motion Hypergraph, Alg. 2),
+// The motion hypergraph H_M of the DaSH method (paper: Method > Motion Hypergraph, Alg. 3),
 // grounded on a task-space hypergraph H_T.
 //
 //  motion vertices      a task-space vertex with a configuration: a robot alone or holding an
@@ -18,7 +18,7 @@
 //                       reached from every object with a goal resting at its goal site and every
 //                       robot alone at home.
 //
-// Construction follows Alg. 2 in rounds: the first round samples every pick hyperarc and grows
+// Construction follows Alg. 3 in rounds: the first round samples every pick hyperarc and grows
 // each roadmap when it is first used (RepresentationSettings::initial_roadmap_samples); place
 // and handoff hyperarcs are sampled for each grasp the search finds an object held in, the
 // first time it needs them (their tail vertex exists only once that grasp is reachable);
@@ -56,18 +56,31 @@ enum class IdlePose {
 };
 
 struct RepresentationSettings {
-  int initial_roadmap_samples = 10;    ///< samples of a roadmap when it is created (paper: 10)
-  int roadmap_samples_per_round = 10;  ///< added to every roadmap per round (paper: 10)
-  int handoff_samples_per_round = 2;   ///< new samples per handoff hyperarc and giver grasp per round
-  /// When a move query finds no path, its roadmap grows by move_growth_samples and the query
-  /// is repeated; a roadmap grows so at most move_growth_attempts times per round.
+  /// Uniform samples of a roadmap when it is created, plus roadmap_samples_per_round per past
+  /// round (paper: 10); fewer start cheaper and leave more to on-demand growth.
+  int initial_roadmap_samples = 10;
+  /// Samples added to every roadmap per round of expansion (paper: 10); more paths, more time.
+  int roadmap_samples_per_round = 10;
+  /// New handoff samples per handoff hyperarc and giver grasp per round (>= 1); more give more
+  /// handoff poses and widen the search.
+  int handoff_samples_per_round = 2;
+  /// Times per round a roadmap may grow on the spot (move_growth_samples each) for a move or
+  /// detour it cannot connect; more leave fewer moves unplanned, at more construction time.
   int move_growth_attempts = 3;
-  int move_growth_samples = 30;        ///< half uniform, a quarter near each end of the query
-  double move_growth_spread = 0.5;     ///< joint range of the samples near an end [rad]
-  double velocity_fraction = 0.6;      ///< move speed cap, fraction of each joint's velocity limit
-  double max_acceleration = 4.0;       ///< move acceleration cap for every joint [rad/s^2]
+  /// Samples per on-the-spot growth: about half uniform, a quarter near each end of the move.
+  int move_growth_samples = 30;
+  /// Joint range around a move's end of the samples drawn near it [rad]; narrower fills pockets.
+  double move_growth_spread = 0.5;
+  /// Move speed cap, fraction of each joint's velocity limit, in (0, 1]; higher: shorter plans,
+  /// less controller margin.
+  double velocity_fraction = 0.6;
+  /// Move acceleration cap for every joint [rad/s^2]; higher: shorter moves, larger torques.
+  double max_acceleration = 4.0;
+  /// Transition sampler (P_trans) settings.
   TransitionSettings transitions;
+  /// Roadmap (P_move) settings.
   RoadmapSettings roadmap;
+  /// Collision checker settings.
   CollisionSettings collision;
 
   /// Throws std::invalid_argument naming the field when a value is out of range.
@@ -208,7 +221,7 @@ class MotionHypergraph {
   /// for so far).
   bool hasPlaceSample(int object) const;
 
-  /// One more round of Alg. 2's construction: handoff samples for every grasp seen, roadmap
+  /// One more round of Alg. 3's construction: handoff samples for every grasp seen, roadmap
   /// growth. Returns the number of the round just completed (the first is 1).
   int expand();
   int rounds() const { return round_; }

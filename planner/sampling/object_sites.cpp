@@ -220,7 +220,7 @@ namespace {
 
 /// Height above an object that a gripper picking it from above takes up: 157 mm from the UR
 /// tool flange to the Hand-E's fingertips (I/O coupling 11 mm + 99 mm + 46.5 mm fingertip,
-/// reference/ur5e_hande.yaml) plus the 100 mm straight approach, rounded [m].
+/// github.com/AGH-CEAI/robotiq_hande_description) plus the 100 mm straight approach, rounded [m].
 constexpr double kGripperAbove = 0.25;
 
 /// UR5e base radius (149 mm base diameter, Universal Robots UR5e data sheet) plus 15 mm [m].

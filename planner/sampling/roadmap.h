@@ -1,5 +1,5 @@
 #pragma once
-// The move planner of the motion hypergraph (paper: Method > Motion Hypergraph, Alg. 2):
+// The move planner of the motion hypergraph (paper: Method > Motion Hypergraph, Alg. 3):
 // a probabilistic roadmap per task-space element — one robot alone (fingers open), or one
 // robot holding an object in a fixed grasp (the held object is part of the robot's collision
 // geometry). The roadmap is grown incrementally: `grow(n)` adds n collision-free samples (the
@@ -30,9 +30,14 @@
 namespace dashbed::planner {
 
 struct RoadmapSettings {
-  int neighbours = 10;          ///< k of the k-nearest connection of every new node
-  double max_edge_time = 1.5;   ///< longest edge [s at full speed]; longer pairs are not connected
-  int shortcut_attempts = 30;   ///< random shortcut attempts per returned path
+  /// Nearest nodes each new node is connected to (fixed k, not PRM*'s growing k); more edges to
+  /// validate, better connectivity.
+  int neighbours = 10;
+  /// Longest edge, as rest-to-rest time at full joint speed [s]; longer edges connect sparse
+  /// roadmaps but collide more often.
+  double max_edge_time = 1.5;
+  /// Seeded random shortcut attempts per returned path; more give shorter paths, more checks.
+  int shortcut_attempts = 30;
 };
 
 class Roadmap {

@@ -30,10 +30,12 @@ using Eigen::Matrix3d;
 using Eigen::Vector3d;
 
 const Vector3d kUp = Vector3d::UnitZ();
-/// Width of a Hand-E standard fingertip across the closing axis (reference S5; the URDF's tip box).
+/// Width of a Hand-E standard fingertip across the closing axis (Robotiq's Hand-E Isaac Sim
+/// assets, github.com/robotiq/isaacsim_assets; the URDF's tip box).
 constexpr double kFingertipWidth = 0.0292;
-/// How far the Hand-E housing's front face lies behind the TCP: TCP 132.5 mm, face 86.1 mm
-/// from the mounting face (the URDF's housing box, reference S4/S5).
+/// How far the Hand-E housing's front face lies behind the TCP: TCP 132.5 mm (Robotiq Hand-E
+/// ROS 2 description, github.com/robotiq/ros), face 86.1 mm (Robotiq's Hand-E Isaac Sim assets)
+/// from the mounting face (the URDF's housing box).
 constexpr double kHousingBehindTcp = 0.1325 - 0.0861;
 /// Room kept between two grippers' fingertips along an object, and between a held object and
 /// the housing [m] (above twice the collision margin).
@@ -153,8 +155,8 @@ double topReach(const core::World& world, const ObjectSites& sites, int object) 
 /// and on the object the giver holds) on either side (not so on a 45 mm cube: 2.5 mm beside it
 /// in the Hand-E's 50 mm). This is the handoff that holds in
 /// simulation (the scripted-plan tool's: giver level, receiver from above): a receiver coming
-/// head-on lost the cube when the giver withdrew, and one coming along the giver's closing axis
-/// had its housing next to a giver finger, which touched it when the giver opened.
+/// head-on loses the cube when the giver withdraws, and one coming along the giver's closing
+/// axis has its housing next to a giver finger, which touches it when the giver opens.
 /// On a long object (the shelf items) the receiver may also come head-on, against the giver's
 /// approach, closing on the giver's face pair, where the two pairs of fingertips sit apart
 /// along the object's length (the pads' width axis of both): the giver at one end, the receiver

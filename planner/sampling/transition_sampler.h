@@ -1,7 +1,7 @@
 #pragma once
-// The transition planners of the motion hypergraph (paper: Method > Motion Hypergraph; Alg. 2's
-// SampleTransitions): IK-based samples of the pick, place and handoff transition hyperarcs of
-// the task-space hypergraph, each carrying the timed motion of every robot involved.
+// The transition planners of the motion hypergraph (paper: Method > Motion Hypergraph; Alg. 3's
+// transition planner P_trans): IK-based samples of the pick, place and handoff transition
+// hyperarcs of the task-space hypergraph, each carrying the timed motion of every robot involved.
 //
 //  pick    the robot starts at a pre-grasp configuration (cartesian_distance back along the
 //          grasp's approach axis), approaches in a straight TCP line, closes, dwells, lifts
@@ -59,28 +59,36 @@
 namespace dashbed::planner {
 
 struct TransitionSettings {
-  double cartesian_distance = 0.10;  ///< approach, lift and retreat length [m]
-  double cartesian_speed = 0.10;     ///< average TCP speed along them [m/s]
-  double cartesian_step = 0.01;      ///< spacing of their IK keys [m]
-  double speed_fraction = 0.5;       ///< cap on joint speed along them, fraction of the limit
-  double gripper_dwell = 0.6;        ///< wait after each gripper command [s]
-  double drop_height = 0.002;        ///< release height above the support after a vertical descent [m]
-  /// Release height above the support for a horizontal approach [m]: the held object slides
-  /// in at this height. Above the collision margin (CollisionSettings::margin) it is checked
-  /// against the static scene on the way; at or below it, it counts as touching its support.
+  /// Length of the straight approach, lift and retreat lines [m]; longer clears neighbours
+  /// better but lengthens transitions and loses IK samples.
+  double cartesian_distance = 0.10;
+  /// Average TCP speed along those lines [m/s]; faster shortens transitions, harder contacts.
+  double cartesian_speed = 0.10;
+  /// Spacing of the IK keys along those lines [m]; finer tracks the line closer, more keys.
+  double cartesian_step = 0.01;
+  /// Joint speed cap along those lines, fraction of the velocity limit (see peak_factor).
+  double speed_fraction = 0.5;
+  /// Wait after each gripper command [s] (also the cost-to-go of an unsampled hyperarc);
+  /// shorter saves time, risks an unsettled grasp.
+  double gripper_dwell = 0.6;
+  /// Release height above the support after a vertical descent [m].
+  double drop_height = 0.002;
+  /// Height above the support a held object slides in and is released at [m]; at or below
+  /// CollisionSettings::margin it counts as touching the support and is not checked against it.
   double slide_height = 0.005;
-  /// Length of a horizontal approach [m]: long enough to start outside a shelf compartment
-  /// (a back slot lies 0.22 m inside the generated shelf), where roadmap moves can reach.
-  /// Where it has no sample, a slide into a shelf through its open side starts nearer.
+  /// Length of a horizontal approach into a shelf slot [m], shortened in 2 cm steps where it has
+  /// no sample; long enough to start outside the compartment, where roadmap moves reach.
   double slide_distance = 0.25;
-  /// Each piece is timed for a joint peak of peak_factor x its average within speed_fraction
-  /// of the limit. The simulator's cubic through the keys peaks at up to 3 x the average
-  /// (curvePeakOverMean, key_curve.h; 4/3 out of rest, about 1 while cruising), so the joints
-  /// stay within speed_fraction x 3 / peak_factor of their limits: 1.0 at the defaults.
+  /// Key pieces are timed for a joint peak of peak_factor x their average within speed_fraction;
+  /// the key curve peaks at <= 3x, so joints stay within speed_fraction x 3 / peak_factor.
   double peak_factor = 1.5;
-  double max_step_jump = 0.3;        ///< largest joint change between keys of a line [rad]
-  double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
-  core::HandoffShape handoff;        ///< where handoff poses are drawn (core::handoffZone)
+  /// Largest joint change between two keys of a line [rad] (rejects IK branch flips).
+  double max_step_jump = 0.3;
+  /// Smallest |sin| of the elbow and wrist 2 angles accepted in a key; larger rejects more samples.
+  double singularity_margin = 0.05;
+  /// Box the handoff poses are drawn in (core::handoffZone); the task-space hypergraph's handoff
+  /// test uses the default shape whatever this says.
+  core::HandoffShape handoff;
 };
 
 class TransitionSampler {

@@ -27,7 +27,7 @@
 // High level: best-first over constraint sets by makespan, as a focal search (ECBS's high level):
 // of the open nodes at most focal_weight times as long as the shortest, the one free of conflicts
 // for longest (ties: shorter, fewer constraints, created first); with focal_weight 1 the shortest
-// first, of equally short ones the one free for longest. Or depth first along time (NodeOrder).
+// first, of equally short ones the one free for longest. Or along time, or depth first (NodeOrder).
 // With a bound (makespan_below) nodes not shorter than it are dropped. A node's schedule is checked
 // robot against robot, continuously in time (robot_conflicts.h). At the earliest conflict, between
 // item A of robot a and item B of robot b (an item is a segment, or the robot standing still
@@ -70,26 +70,21 @@ enum class NodeOrder {
   /// best first: the shortest schedule first, or any within focal_weight of it that is free of
   /// conflicts for longer
   kMakespan,
-  /// along time: the node free of conflicts for longest first (ties: the shortest); finds a
-  /// schedule in fewer nodes where any below a bound will do (crowded sequential plans
-  /// overlapping), not the shortest
+  /// along time: the node free of conflicts for longest first (ties: the shortest); fewer nodes
+  /// where any schedule below a bound will do, not the shortest.
   kAlongTime,
-  /// depth first: the node made to resolve the latest conflict first, that is the children of
-  /// the node that got furthest along its schedule, backtracking to the deepest open node (ties
-  /// as kAlongTime). A node's conflict-free prefix ends where its schedule first differs from
-  /// its parent's, often well before the conflict it resolves, so along time goes back and
-  /// forth between siblings; depth first commits, and gets through schedules whose robots meet
-  /// again and again, with longer schedules where both find one.
+  /// depth first: the children of the node whose conflict lies latest first, backtracking to the
+  /// next latest (ties as kAlongTime); gets through crowded schedules, to longer ones.
   kDepthFirst,
 };
 
 struct ConflictResolutionBudget {
-  int max_nodes = 2000;       ///< high-level nodes expanded
+  /// High-level nodes one call may expand before it returns kBudget.
+  int max_nodes = 2000;
+  /// Node order of the high level: best first (focal), along time, or depth first.
   NodeOrder order = NodeOrder::kMakespan;
-  /// kMakespan's focal weight (>= 1): how much longer than the shortest open node a node may
-  /// be and still come first for being free of conflicts for longer. Above 1 the search goes
-  /// deeper before it goes wider: fewer nodes to a schedule, which is then at most that factor
-  /// longer than the shortest node open when it was taken.
+  /// kMakespan's focal weight (>= 1): nodes up to this factor longer than the shortest open one
+  /// come first when free of conflicts for longer; above 1, fewer nodes, longer schedules.
   double focal_weight = 1.0;
   /// Nodes whose makespan reaches this are dropped (none: every node is kept).
   std::optional<Millis> makespan_below;

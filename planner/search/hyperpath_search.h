@@ -64,8 +64,9 @@ namespace dashbed::planner {
 
 /// Limits of one query. Iteration caps make tests reproducible; users add a deadline.
 struct SearchBudget {
-  std::uint64_t max_expansions = 100000;  ///< histories expanded
-  std::function<bool()> stop;              ///< returns true when time is up (may be empty)
+  /// Histories one query may expand before it returns kBudget.
+  std::uint64_t max_expansions = 100000;
+  std::function<bool()> stop;  ///< returns true when time is up (may be empty)
 };
 
 enum class SearchStatus {
@@ -115,12 +116,8 @@ inline bool keepsClearOfIdle(QueryMode mode) { return mode == QueryMode::kParkCl
 
 class HyperpathSearch {
  public:
-  /// Relays (only in the modes keeping clear of idle robots, see nearerHandoffsBlocked): an
-  /// object may be handed to a robot no nearer its goal out of a hand whose every handoff
-  /// nearer the goal runs into the robots standing idle. Off by default, as a fallback: where a
-  /// sequential query finds plans without, they tend to be shorter (another robot picks the
-  /// object instead; in 5- and 6-robot rings relays from the start lengthened 3 of 5
-  /// sequential plans, by up to 16 %).
+  /// Keeping clear of idle robots, kAroundIdleRobots lets a robot whose every handoff nearer the
+  /// goal runs into them hand the object to one no nearer (a fallback: it lengthens plans).
   enum class Relays { kOff, kAroundIdleRobots };
   /// `graph` is extended on demand (transitions sampled, moves planned) and must outlive the
   /// search.

@@ -182,7 +182,7 @@ void TaskSpaceHypergraph::build() {
     }
   }
 
-  // Alg. 1. Decompose(T_init) and Initialize: every robot alone and every object resting are
+  // Alg. 2. Decompose(T_init) and Initialize: every robot alone and every object resting are
   // vertices from the start, so only "robot holding object" elements are discovered.
   std::vector<bool> obtainable(static_cast<std::size_t>(n) * m, false);
   std::vector<bool> added(candidates.size(), false);

@@ -1,6 +1,6 @@
 #pragma once
 // The task-space hypergraph H_T = (V_T, E_T) of the decoupled MM-DaSH representation
-// (paper: Method > Task Space Hypergraph, Alg. 1; Application to Multi-Manipulator
+// (paper: Method > Task Space Hypergraph, Alg. 2; Application to Multi-Manipulator
 // Rearrangement > Decoupled Representation; Representation Analysis > Hypergraph
 // Representation).
 //
@@ -25,7 +25,7 @@
 // RestPose::kAside and the same two vertices (the object resting, the robot holding it).
 // Regrasps are not part of this action space.
 //
-// Construction follows Alg. 1: Decompose(T_init) gives every robot alone and every object
+// Construction follows Alg. 2: Decompose(T_init) gives every robot alone and every object
 // resting; ExpandHypergraph (breadth first) then adds every allowed transition whose tail
 // vertices exist, with its head vertices, until a round adds no hyperarc. So only obtainable
 // elements become vertices: "r holding o" exists only if r can pick o at its start or receive
@@ -74,7 +74,7 @@ struct TransitionHyperarc {
   RestPose rest_pose = RestPose::kNone;
 };
 
-/// The allowed transitions A of Alg. 1 for pick/place/handoff rearrangement.
+/// The allowed transitions A of Alg. 2 for pick/place/handoff rearrangement.
 struct AllowedTransitions {
   int robots = 0;
   int objects = 0;
@@ -99,7 +99,7 @@ struct AllowedTransitions {
 
 class TaskSpaceHypergraph {
  public:
-  /// Builds H_T by Alg. 1 from the allowed transitions. Robots are named r0, r1, ... and
+  /// Builds H_T by Alg. 2 from the allowed transitions. Robots are named r0, r1, ... and
   /// objects o0, o1, ... Throws std::invalid_argument when `allowed` is inconsistent.
   explicit TaskSpaceHypergraph(const AllowedTransitions& allowed);
 
@@ -149,7 +149,7 @@ class TaskSpaceHypergraph {
   /// resting at its start (vertex ids, ascending).
   std::vector<int> initialElements() const;
 
-  /// Rounds of ExpandHypergraph that added hyperarcs (Alg. 1's loop, breadth first).
+  /// Rounds of ExpandHypergraph that added hyperarcs (Alg. 2's loop, breadth first).
   int expansionRounds() const { return expansion_rounds_; }
 
   const std::string& robotName(int robot) const { return robot_names_.at(robot); }

@@ -1,5 +1,5 @@
 #pragma once
-// Rendering throughput of a world's scene (for `dashbed bench` and the numbers in the notes).
+// Rendering throughput of a world's scene (for `dashbed bench render`).
 
 #include "core/robot_set.h"
 #include "core/world.h"

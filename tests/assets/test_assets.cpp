@@ -1,6 +1,6 @@
 // Checks of assets/ur5e_hande.urdf as a file: its visual meshes exist and load, its collision
-// geometry is convex primitives only, and its inertials are physical and match the reference
-// masses (shared/reference/ur5e_hande.yaml).
+// geometry is convex primitives only, and its inertials are physical and match the published
+// masses (UR's DH-parameters page, universal-robots.com; the Hand-E ROS descriptions).
 
 #include <catch2/catch.hpp>
 
@@ -148,7 +148,7 @@ TEST_CASE("robot URDF: masses match the reference", "[assets]") {
     return link->inertial->mass;
   };
 
-  // UR per-link masses (S1) and their sum
+  // UR per-link masses (UR's DH-parameters page, universal-robots.com) and their sum
   const std::map<std::string, double> ur_masses = {
       {"shoulder_link", 3.761}, {"upper_arm_link", 8.058}, {"forearm_link", 2.846},
       {"wrist_1_link", 1.37},   {"wrist_2_link", 1.3},     {"wrist_3_link", 0.365}};
@@ -160,7 +160,8 @@ TEST_CASE("robot URDF: masses match the reference", "[assets]") {
   }
   CHECK(arm == Approx(17.7).margin(1e-9));
 
-  // Hand-E body + two fingers + I/O coupling (S4, S6, S7)
+  // Hand-E body + two fingers + I/O coupling (Robotiq Hand-E ROS 2 description,
+  // github.com/robotiq/ros; AGH-CEAI robotiq_hande_description; cambel/robotiq)
   const double gripper = mass("hande_base") + mass("hande_left_finger") +
                          mass("hande_right_finger") + mass("hande_coupling");
   CHECK(gripper == Approx(1.05895).margin(1e-9));

@@ -114,5 +114,5 @@ TEST_CASE("the arm's moving mass matches UR's published link masses", "[dynamics
   for (const char* name : {"shoulder_link", "upper_arm_link", "forearm_link", "wrist_1_link", "wrist_2_link", "wrist_3_link"}) {
     arm += dut.links()[dut.requireLink(name)].mass;
   }
-  CHECK(arm == Approx(17.7).margin(1e-9));  // reference file: moving_mass_sum (S1)
+  CHECK(arm == Approx(17.7).margin(1e-9));  // sum of the link masses on UR's DH-parameters page
 }

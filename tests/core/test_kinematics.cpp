@@ -27,8 +27,9 @@ struct FkCase {
   std::array<std::array<double, 3>, 3> R;  // tool0 rotation in base_link, row by row
 };
 
-// FK reference cases of ../shared/reference/ur5e_hande.yaml (fk_reference_cases, computed there
-// from UR's DH table S1 and cross-checked against the ROS 2 description S2), tool0 in base_link.
+// FK reference cases computed from UR's DH table (UR's DH-parameters page, universal-robots.com)
+// and cross-checked against UR's ROS 2 description
+// (github.com/UniversalRobots/Universal_Robots_ROS2_Description), tool0 in base_link.
 const std::array<FkCase, 7> kCases{{
     {"zero", {0, 0, 0, 0, 0, 0}, {0.8172, 0.2329, 0.0628}, {{{-1, 0, 0}, {0, 0, 1}, {0, 1, 0}}}},
     {"upright", {0.0, -1.570796326795, 0.0, -1.570796326795, 0.0, 0.0}, {0.0, 0.2329, 1.0794},

@@ -26,7 +26,7 @@ const std::array<std::string, 6> kJointNames{"shoulder_pan_joint", "shoulder_lif
                                              "wrist_2_joint",      "wrist_3_joint"};
 constexpr double kTwoPi = 6.283185307179586;
 constexpr double kPi = 3.141592653589793;
-// UR5e limits (shared/reference/ur5e_hande.yaml): +-360 deg, elbow +-180 deg, 180 deg/s
+// UR5e limits (UR's ROS 2 description, joint_limits.yaml): +-360 deg, elbow +-180 deg, 180 deg/s
 const std::array<double, 6> kLower{-kTwoPi, -kTwoPi, -kPi, -kTwoPi, -kTwoPi, -kTwoPi};
 const std::array<double, 6> kUpper{kTwoPi, kTwoPi, kPi, kTwoPi, kTwoPi, kTwoPi};
 const std::array<double, 6> kMaxVelocity{kPi, kPi, kPi, kPi, kPi, kPi};

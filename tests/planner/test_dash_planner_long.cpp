@@ -173,8 +173,8 @@ TEST_CASE("five robots in a ring hand cubes across their shared centre", "[plann
 TEST_CASE("four robots hand twelve crossing cubes side by side, a focal weight above 1 in fewer nodes",
           "[planner][dash]") {
   // the paper's square of four robots: every cube needs a handoff, and the robots reach into
-  // the shared centre at once. One task plan, whose conflicts best first (focal weight 1)
-  // resolves in 267 nodes, Greedy's default weight in 157, here within its factor of best
+  // the shared centre at once. One task plan, whose conflicts Greedy's default weight resolves
+  // in fewer nodes than best first (focal weight 1), here within its factor of best
   // first's makespan (the weight bounds a node against the shortest open one when it is taken,
   // not against best first's result: a detour may make a child shorter than its parent)
   const core::LoadedWorld world = core::validateWorld(tools::generateSorting({4, 12, 4, tools::StartLayout::kCross, 2}));
@@ -238,11 +238,12 @@ TEST_CASE("MM-DaSH runs as greedy until greedy has a plan, and is then never wor
 
 TEST_CASE("a crowded sequential task plan backtracks to the step that went wrong, not through all after it",
           "[planner][dash]") {
-  // five robots around a crowded centre. Two ways a depth-first search used to order every
-  // other step before finding out, then run out of its budget backtracking through the last
-  // ones: a place whose robot has no way back to where it waits clear of the robots waiting
-  // (the history fails only at its final move), and a robot holding an object it has no way to
-  // hand on, while the search starts on other objects instead of taking back that pick.
+  // five robots around a crowded centre. Two ways a depth-first search can order every other
+  // step before finding out, then run out of its budget backtracking through the last ones: a
+  // place whose robot has no way back to where it waits clear of the robots waiting (the
+  // history fails only at its final move), and a robot holding an object it has no way to hand
+  // on, while the search starts on other objects instead of taking back that pick. The search
+  // must catch both where they happen.
   const core::LoadedWorld world = core::loadWorld(testWorldPath("ring_5r_10c.yaml"));
   const TaskSpaceHypergraph task_space = TaskSpaceHypergraph::fromWorld(*world.world, *world.robots, world.reach);
   MotionHypergraph graph(world, task_space, 7);
@@ -282,9 +283,9 @@ TEST_CASE("a round's failed direct task plans resolved again with more reroutes 
 TEST_CASE("six robots in a ring get a direct plan from the second try along time with its own node budget",
           "[planner][dash]") {
   // six robots reaching into one shared centre: round 1 ends with a sequential plan, and no
-  // direct task plan resolves best first; depth first along time resolves the conflicts one
-  // after another and needs more than conflict_nodes for it (with 500 it stops part of the
-  // way, and the sequential plan is returned)
+  // direct task plan resolves best first; the second try along time (NodeOrder::kAlongTime)
+  // resolves the conflicts one after another and needs more nodes than conflict_nodes for it:
+  // its own budget, conflict_nodes_along_time
   const core::LoadedWorld world =
       core::validateWorld(tools::generateSorting({6, 6, 4, tools::StartLayout::kRandom, 1, tools::RobotLayout::kRing}));
   const PlannerSettings settings;  // `dashbed plan`'s
@@ -324,8 +325,8 @@ TEST_CASE("a second try that runs out of nodes best first resolves depth first a
           "[planner][dash]") {
   // two robots 0.6 m apart sorting 10 cubes: no direct task plan resolves on the first try and
   // round 1 falls back to one object at a time. On a later round's second try, best first runs
-  // out of its nodes ordering the robots' many meetings both ways; depth first along time, which
-  // takes any schedule shorter than the fallback's, finds one
+  // out of its nodes ordering the robots' many meetings both ways; along time (or, on the
+  // shortest plan, depth first), which takes any schedule shorter than the fallback's, finds one
   const core::LoadedWorld world = core::loadWorld(worldPath("handwritten/v15_close_10c.yaml"));
   std::vector<std::string> progress;
   PlannerBudget budget;
@@ -389,8 +390,8 @@ TEST_CASE("a robot standing in the others' way folds back over its base to wait 
 TEST_CASE("the search below a folded robot has re-routes of its own and leaves the others theirs",
           "[planner][dash][shelf]") {
   // 6 shelf objects, seed 4: round 1's first greedy task plan resolves without a fold. Folded
-  // children come first there, and when the nodes below them shared the 24 re-routes with the
-  // rest, they used them up: no schedule in 500 nodes
+  // children come first there; the nodes below them have re-routes of their own, so they cannot
+  // use up those the nodes without a fold need
   WorldGraph g(core::validateWorld(tools::generateShelving({6, 4})), 4);
   MotionHypergraph& graph = g.graph;
   const ConflictResult resolved = firstTaskPlanResolved(graph);

@@ -83,7 +83,8 @@ TEST_CASE("a robot holds its home pose under gravity for 5 s", "[sim]") {
 
 TEST_CASE("tracking a trajectory at the UR5e's maximum joint speed", "[sim]") {
   // every arm joint at once follows q0 + A (1 - cos(w t)) with A w = pi rad/s, the UR5e's
-  // joint speed limit (reference file, S2/S3), and peak acceleration A w^2 = 2 pi^2 rad/s^2
+  // joint speed limit (UR's ROS 2 description, joint_limits.yaml), and peak acceleration
+  // A w^2 = 2 pi^2 rad/s^2
   const core::World world = test::tableWorld(false);
   const core::RobotSet robots(world);
   sim::Simulation sim(world, robots);
@@ -127,7 +128,7 @@ TEST_CASE("Hand-E fingers pushed apart come back to equal positions", "[sim]") {
   const core::RobotSet robots(world);
   sim::Simulation sim(world, robots);
   Eigen::VectorXd q = sim.jointPositions(0);
-  q[6] = 0.0318;  // the difference found after a handoff in a generated 6-robot world
+  q[6] = 0.0318;  // a difference as large as a handoff can leave (a generated 6-robot world)
   q[7] = 0.0182;
   sim.setJointPositions(0, q);
   core::Plan plan;

@@ -437,9 +437,10 @@ std::string markdownTable(const std::vector<BenchRow>& rows) {
   return out.str();
 }
 
-std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& options) {
+std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& options, bool with_title) {
   std::ostringstream out;
-  out << "# Planner benchmark (`dashbed bench plan`)\n\n";
+  if (with_title) out << "# Planner benchmark (`dashbed bench plan`)\n\n";
+  const std::string sub = with_title ? "## " : "### ";
   out << "Seeds 1.." << options.seeds << " (world seed = planner seed), budget per run "
       << core::significantText(options.greedy_budget, 6) << " s for Greedy, "
       << core::significantText(options.optimal_budget, 6) << " s for MM-DaSH, at most " << options.max_rounds
@@ -459,7 +460,7 @@ std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& o
          "wall-clock planning time.\n\n";
   out << markdownTable(rows) << "\n";
 
-  out << "## Runs without a passing result\n\n";
+  out << sub << "Runs without a passing result\n\n";
   bool any = false;
   for (const BenchRow& row : rows) {
     if (!row.not_run.empty()) {
@@ -480,7 +481,7 @@ std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& o
   }
   if (!any) out << "None.\n";
 
-  out << "\n## Comparison with the paper\n\n";
+  out << "\n" << sub << "Comparison with the paper\n\n";
   out << "The paper's Table I gives averages over 10 seeds on an Intel i9-10900KF at 3.7 GHz, counting a run "
          "longer than 10^4 s as failed; its success rate is 1.00 in every MM-DaSH and Greedy row. Its cost is in "
          "timesteps of unstated length, ours is the makespan in seconds, so costs are not compared. It reports "

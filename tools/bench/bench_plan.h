@@ -107,8 +107,9 @@ std::optional<PaperRow> paperRow(const BenchCase& scenario);
 
 /// The results table in Markdown: a header and one line per row.
 std::string markdownTable(const std::vector<BenchRow>& rows);
-/// bench_plan.md: settings, the table, the failed runs, and the comparison with the paper.
-std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& options);
+/// bench_plan.md: settings, the table, the failed runs, and the comparison with the paper;
+/// without the title, its sections one level down (for docs/benchmarks.md).
+std::string benchReport(const std::vector<BenchRow>& rows, const BenchOptions& options, bool with_title = true);
 /// One CSV line per row (numbers without units, empty where undefined), with a header.
 std::string summaryCsv(const std::vector<BenchRow>& rows);
 /// One CSV line per run, with a header.

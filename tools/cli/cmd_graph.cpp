@@ -35,7 +35,7 @@ struct GraphOptions {
   std::string motion_output;  // the motion hypergraph's DOT, when given
 };
 
-/// The motion hypergraph's first round (Alg. 2): every pick, then the places and handoffs of
+/// The motion hypergraph's first round (Alg. 3): every pick, then the places and handoffs of
 /// every grasp the picks and handoffs give, twice over; written as DOT.
 void writeMotionDotFile(const core::LoadedWorld& loaded, const planner::TaskSpaceHypergraph& graph,
                         const std::string& output, std::ostream& report) {

@@ -63,7 +63,7 @@ nlohmann::json poseJson(const Pose& X) {
   const Eigen::Vector3d rpy = core::rpyFromRotation(X.linear());
   nlohmann::json rows = nlohmann::json::array();
   for (int r = 0; r < 3; ++r) rows.push_back({X.linear()(r, 0), X.linear()(r, 1), X.linear()(r, 2)});
-  const double w_sign = quat.w() < 0 ? -1.0 : 1.0;  // w >= 0, as in the reference file
+  const double w_sign = quat.w() < 0 ? -1.0 : 1.0;  // w >= 0: one sign for q and -q, the same rotation
   return {{"position", {X.translation().x(), X.translation().y(), X.translation().z()}},
           {"rotation_rows", rows},
           {"quaternion_xyzw", {w_sign * quat.x(), w_sign * quat.y(), w_sign * quat.z(), w_sign * quat.w()}},

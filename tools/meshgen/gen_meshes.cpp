@@ -113,20 +113,21 @@ const Eigen::Vector3d kY = Eigen::Vector3d::UnitY();
 const Eigen::Vector3d kZ = Eigen::Vector3d::UnitZ();
 
 // --- UR5e --------------------------------------------------------------------------------
-// Radii from the UR ROS 2 description's approximate link radii (S2 in
-// shared/reference/ur5e_hande.yaml); extents match the URDF collision primitives.
+// Radii from the approximate link radii of UR's ROS 2 description
+// (github.com/UniversalRobots/Universal_Robots_ROS2_Description); extents match the URDF
+// collision primitives. Lengths from UR's DH-parameters page (universal-robots.com).
 constexpr double kShoulderRadius = 0.060;
 constexpr double kUpperArmRadius = 0.054;
 constexpr double kElbowRadius = 0.060;
 constexpr double kForearmRadius = 0.040;
 constexpr double kWristRadius = 0.045;
-constexpr double kUpperArmOffset = 0.138;   // lateral offset of the upper-arm tube (S2)
+constexpr double kUpperArmOffset = 0.138;   // lateral offset of the upper-arm tube (UR ROS 2)
 constexpr double kForearmTubeZ = 0.020;     // forearm tube height above the elbow frame
-constexpr double kUpperArmLength = 0.425;   // S1 a2
-constexpr double kForearmLength = 0.3922;   // S1 a3
-constexpr double kWrist1Offset = 0.1333;    // S1 d4
-constexpr double kWrist2Offset = 0.0997;    // S1 d5
-constexpr double kWrist3Offset = 0.0996;    // S1 d6
+constexpr double kUpperArmLength = 0.425;   // UR DH a2
+constexpr double kForearmLength = 0.3922;   // UR DH a3
+constexpr double kWrist1Offset = 0.1333;    // UR DH d4
+constexpr double kWrist2Offset = 0.0997;    // UR DH d5
+constexpr double kWrist3Offset = 0.0996;    // UR DH d6
 constexpr double kWrist3BodyDepth = 0.020;  // wrist_3 body behind the flange face
 constexpr double kFlangeRadius = 0.0315;    // 63 mm tool flange
 constexpr double kFlangeDepth = 0.006;
@@ -214,10 +215,12 @@ ArmLinkMeshes wrist3() {
 }
 
 // --- Robotiq Hand-E ----------------------------------------------------------------------
-constexpr double kCouplingRadius = 0.0375;  // S6
-constexpr double kCouplingHeight = 0.011;   // S6
-constexpr double kBodyHalfWidth = 0.0375;   // 75 mm envelope (S5)
-constexpr double kHousingFaceZ = 0.0861;    // S5
+// Sources: "AGH", AGH-CEAI's Hand-E description (github.com/AGH-CEAI/robotiq_hande_description),
+// and "Robotiq", Robotiq's Hand-E Isaac Sim assets (github.com/robotiq/isaacsim_assets).
+constexpr double kCouplingRadius = 0.0375;  // AGH
+constexpr double kCouplingHeight = 0.011;   // AGH
+constexpr double kBodyHalfWidth = 0.0375;   // 75 mm envelope (Robotiq)
+constexpr double kHousingFaceZ = 0.0861;    // Robotiq
 constexpr double kBodyCornerRadius = 0.008;
 
 Mesh coupling() {
@@ -256,10 +259,10 @@ Mesh handeSlot() {
 // Finger geometry in the finger frame (pad face = plane x = 0, body at x >= 0); identical to
 // the URDF collision boxes except for the chamfered outer tip.
 constexpr double kPadThickness = 0.002;
-constexpr double kFingerThickness = 0.0174;  // S5 standard tip
-constexpr double kFingerHalfWidth = 0.0146;  // S5: 29.2 mm wide
+constexpr double kFingerThickness = 0.0174;  // Robotiq standard tip
+constexpr double kFingerHalfWidth = 0.0146;  // Robotiq: 29.2 mm wide
 constexpr double kFingerBottom = -0.0147;    // reaches into the housing slot
-constexpr double kFingerTip = 0.0465;        // S6: tip end 46.5 mm above the finger joint
+constexpr double kFingerTip = 0.0465;        // AGH: tip end 46.5 mm above the finger joint
 
 Mesh finger() {
   Mesh m;

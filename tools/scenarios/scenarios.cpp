@@ -68,14 +68,13 @@ constexpr double kCubeEdge = 0.04;     // [m], Hand-E opens to 50 mm
 // Shelf items stand 120 mm tall, so a gripper coming in from the side holds them high enough
 // for its 75 mm wide body to clear the shelf board (core/grasps.h).
 const Eigen::Vector3d kShelfItemSize(0.04, 0.04, 0.12);
-// Shelf items start at least this far from a robot's base axis [m]: an item 0.17 m from it
-// (generator seed 10) had no collision-free grasp for either robot.
+// Shelf items start at least this far from a robot's base axis [m]: an item much nearer
+// (0.17 m) has no collision-free grasp for either robot.
 constexpr double kShelfBaseClearance = 0.25;
 // Shelf items start turned by at most this much from the shelf's axes [rad]. Side grasps come
-// in along a face normal; an item midway between the robots turned by 37 degrees or more
-// (generator seeds 13, 36, 40, 60, 82, 84, 87, 91, 95 of the first 100 with 6 objects, when
-// 45 degrees were allowed) had its faces towards each robot's base, too close for a
-// horizontal grasp, and away from it, where the wrist meets the table: no grasp for either.
+// in along a face normal; an item midway between the robots turned by 37 degrees or more has
+// its faces towards each robot's base, too close for a horizontal grasp, and away from it,
+// where the wrist meets the table: no grasp for either.
 constexpr double kShelfMaxYaw = kPi / 6.0;
 constexpr double kCubeMaxYaw = kPi / 4.0;  // [rad] a cube turned by more is one turned by less
 constexpr double kCubeMass = 0.1;      // [kg]

@@ -39,8 +39,8 @@ struct ScriptError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
-/// Motion and timing parameters of scripted plans. The defaults follow the brief: half the
-/// UR5e joint speed, slow straight approaches, Hand-E dwell times.
+/// Motion and timing parameters of scripted plans. The defaults: half the UR5e joint speed,
+/// slow straight approaches, Hand-E dwell times.
 struct ScriptSettings {
   double speed_fraction = 0.5;       ///< peak joint speed as a fraction of each joint's limit
   double peak_factor = 1.5;          ///< peak / average speed of a cubic segment resting at both ends

@@ -671,7 +671,8 @@ TEST_CASE("A receiver closes on the faces of a cube the giver's fingers leave fr
 
 TEST_CASE("A tall item going into a bin is picked from above at its top and handed over end to end",
           "[planner][transition]") {
-  // housing front face 46.4 mm behind the TCP, 5 mm kept clear (reference S4/S5)
+  // housing front face 46.4 mm behind the TCP (Robotiq Hand-E ROS 2 description and Isaac Sim
+  // assets, github.com/robotiq), 5 mm kept clear
   constexpr double kTopReach = 0.1325 - 0.0861 - 0.005;
   const Setup& s = world("handwritten/x1b_tall_handoff_into_bin.yaml");  // 120 mm item, bin goal
   TransitionSampler sampler(s.loaded, s.task_space, s.scene, s.sites);

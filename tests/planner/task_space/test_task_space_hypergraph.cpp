@@ -106,7 +106,7 @@ TEST_CASE("task-space hypergraph with everything reachable has mn+m+n vertices a
       CHECK(dut.countHyperarcs(TransitionKind::kPick) == static_cast<std::size_t>(m * n));
       CHECK(dut.countHyperarcs(TransitionKind::kPlace) == static_cast<std::size_t>(m * n));
       CHECK(dut.countHyperarcs(TransitionKind::kHandoff) == static_cast<std::size_t>(m * n * (n - 1)));
-      // Alg. 1: picks in the first expansion round, places and handoffs in the second
+      // Alg. 2: picks in the first expansion round, places and handoffs in the second
       CHECK(dut.expansionRounds() == 2);
       checkInvariants(dut);
     }
@@ -172,7 +172,7 @@ TEST_CASE("a robot that cannot reach some objects gets fewer picks and places", 
   CHECK(dut.countHyperarcs(TransitionKind::kPick) == 4);
   CHECK(dut.countHyperarcs(TransitionKind::kPlace) == 4);
   CHECK(dut.countHyperarcs(TransitionKind::kHandoff) == 0);
-  // r1 can never hold o0 or o1: those elements are not obtainable (Alg. 1)
+  // r1 can never hold o0 or o1: those elements are not obtainable (Alg. 2)
   CHECK(dut.holdingVertex(1, 0) == -1);
   CHECK(dut.holdingVertex(1, 1) == -1);
   CHECK(dut.holdingVertex(1, 2) >= 0);

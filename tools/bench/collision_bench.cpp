@@ -1,25 +1,10 @@
-// dashbed_bench_collision — timing of the planner's collision checker (planner/collision/collision_checker.h).
-//
-//   dashbed_bench_collision [WORLD.yaml] [--checks N] [--motions M] [--seed S]
-//
-// WORLD defaults to worlds/default.yaml (the 2-robot sorting scene). Prints a table of the time
-// per query (median, mean, 95th percentile over individually timed calls, and the process CPU
-// time per call over the whole loop, which excludes time lost to other processes) for:
-//   robotFree   one robot against fixtures, resting objects (start poses) and itself, at N
-//               configurations drawn uniformly within the joint limits; split by outcome;
-//               also holding a cube;
-//   robotsFree  robot 0 against robot 1 at N pairs of such configurations, and at N pairs
-//               reaching over the table centre (IK), where they often meet;
-//   motionFree  M straight motions from a free configuration by up to +-0.5 rad per arm joint.
-// Timing is a benchmark, not a test: numbers depend on the machine and its load.
+#include "tools/bench/collision_bench.h"
 
 #include <algorithm>
 #include <chrono>
 #include <cstdint>
 #include <cstdio>
-#include <cstdlib>
 #include <ctime>
-#include <exception>
 #include <functional>
 #include <optional>
 #include <random>
@@ -32,7 +17,9 @@
 #include "core/grasps.h"
 #include "core/world_loader.h"
 #include "planner/collision/collision_checker.h"
+#include "tools/bench/bench_table.h"
 
+namespace dashbed::tools {
 namespace {
 
 using dashbed::core::Pose;
@@ -62,11 +49,9 @@ Stats summarise(std::vector<double> us) {
   return s;
 }
 
-void printRow(const std::string& what, const Stats& s, const std::string& note = "") {
-  char cpu[32] = "";
-  if (s.cpu_mean >= 0.0) std::snprintf(cpu, sizeof cpu, "%10.3f", s.cpu_mean);
-  std::printf("%-46s %8zu %10.3f %10.3f %10.3f %10s  %s\n", what.c_str(), s.count, s.median, s.mean, s.p95, cpu,
-              note.c_str());
+void addRow(BenchTable& table, const std::string& what, const Stats& s, const std::string& note = "") {
+  table.rows.push_back({what, std::to_string(s.count), fixed(s.median, 3), fixed(s.mean, 3), fixed(s.p95, 3),
+                        s.cpu_mean >= 0.0 ? fixed(s.cpu_mean, 3) : "", note});
 }
 
 /// Process CPU time [us]: unlike wall-clock time it does not count the time the process waits
@@ -109,11 +94,11 @@ Eigen::VectorXd reachingConfiguration(const dashbed::core::PlacedRobot& robot, s
   }
 }
 
-/// Times `query` on each of `inputs` and prints three rows: all calls (with the CPU mean, the
+/// Times `query` on each of `inputs` and adds three rows: all calls (with the CPU mean, the
 /// share found free and the narrow-phase tests per call), the free ones and the colliding ones.
 template <class Input, class Query>
-void benchQueries(CollisionChecker& checker, const std::string& name, const std::vector<Input>& inputs,
-                  Query&& query) {
+void benchQueries(BenchTable& table, CollisionChecker& checker, const std::string& name,
+                  const std::vector<Input>& inputs, Query&& query) {
   std::vector<double> all, free, hit;
   checker.resetCounters();
   const double cpu_start = cpuMicroseconds();
@@ -130,75 +115,47 @@ void benchQueries(CollisionChecker& checker, const std::string& name, const std:
                 100.0 * static_cast<double>(free.size()) / calls, narrow);
   Stats stats = summarise(all);
   stats.cpu_mean = (cpuMicroseconds() - cpu_start) / calls;
-  printRow(name + ", all", stats, note);
-  printRow(name + ", free", summarise(free));
-  printRow(name + ", colliding", summarise(hit));
-}
-
-int usage(const char* message) {
-  std::fprintf(stderr, "%s\nusage: dashbed_bench_collision [WORLD.yaml] [--checks N] [--motions M] [--seed S]\n",
-               message);
-  return 2;
+  addRow(table, name + ", all", stats, note);
+  addRow(table, name + ", free", summarise(free));
+  addRow(table, name + ", colliding", summarise(hit));
 }
 
 }  // namespace
 
-int main(int argc, char** argv) try {
-  std::string world_file;
-  int checks = 100000;
-  int motions = 2000;
-  std::uint64_t seed = 1;
-  for (int i = 1; i < argc; ++i) {
-    const std::string arg = argv[i];
-    const auto value = [&]() -> std::string {
-      if (i + 1 >= argc) throw std::invalid_argument(arg + " needs a value");
-      return argv[++i];
-    };
-    if (arg == "--checks") {
-      checks = std::stoi(value());
-    } else if (arg == "--motions") {
-      motions = std::stoi(value());
-    } else if (arg == "--seed") {
-      seed = std::stoull(value());
-    } else if (arg == "-h" || arg == "--help") {
-      return usage("Times the planner's collision checker.");
-    } else if (!arg.empty() && arg[0] == '-') {
-      return usage(("unknown option " + arg).c_str());
-    } else {
-      world_file = arg;
-    }
-  }
-  if (world_file.empty()) world_file = dashbed::core::defaultWorldPath().string();
-  if (checks <= 0 || motions < 0) return usage("--checks must be > 0 and --motions >= 0");
-
+BenchTable benchCollision(const CollisionBenchOptions& options) {
+  const std::string world_file =
+      options.world.empty() ? dashbed::core::defaultWorldPath().string() : options.world;
+  const int checks = options.checks, motions = options.motions;
+  if (checks <= 0 || motions < 0) throw std::invalid_argument("--checks must be > 0 and --motions >= 0");
   const auto loaded = dashbed::core::loadWorld(world_file);
   const auto& world = *loaded.world;
   const auto& robots = *loaded.robots;
-  if (robots.size() < 1) return usage("the world has no robot");
+  if (robots.size() < 1) throw std::invalid_argument(world_file + ": the world has no robot");
 
   const auto build_start = Clock::now();
   const CollisionScene scene(world, robots);
   const double build_ms = std::chrono::duration<double, std::milli>(Clock::now() - build_start).count();
   CollisionChecker checker(scene);
   const auto objects = dashbed::planner::startPlacement(world);
-  std::mt19937_64 rng(seed);
+  std::mt19937_64 rng(options.seed);
+  BenchTable table;
 
-  std::printf("world %s: %zu robots, %zu objects, %zu static boxes; scene built in %.1f ms\n", world.name.c_str(),
-              robots.size(), world.objects.size(), scene.staticBoxes().size(), build_ms);
-  std::printf("settings: margin %.4f m, motion step %.4f m; self pairs ignored for robot 0:", scene.settings().margin,
-              scene.settings().motion_step);
-  for (const auto& pair : scene.ignoredSelfPairs(0)) {
-    std::printf(" %s-%s (%s);", pair.body_a.c_str(), pair.body_b.c_str(), pair.reason.c_str());
-  }
-  std::printf("\n\n%-46s %8s %10s %10s %10s %10s\n", "query [us per call]", "calls", "median", "mean", "p95",
-              "cpu mean");
+  char scene_line[256];
+  std::snprintf(scene_line, sizeof scene_line,
+                "World %s: %zu robots, %zu objects, %zu static boxes; scene built in %.1f ms; margin %.4f m, motion "
+                "step %.4f m. Times in microseconds per call (median, mean, 95th percentile of individually timed "
+                "calls; cpu: process CPU time per call over the whole loop).",
+                world.name.c_str(), robots.size(), world.objects.size(), scene.staticBoxes().size(), build_ms,
+                scene.settings().margin, scene.settings().motion_step);
+  table.note = scene_line;
+  table.header = {"query", "calls", "median", "mean", "p95", "cpu mean", "note"};
 
   // the timer's own cost
   {
     std::vector<double> us;
     bool result = false;
     for (int i = 0; i < 10000; ++i) us.push_back(timeCall([] { return true; }, result));
-    printRow("(empty timed call)", summarise(us));
+    addRow(table, "(empty timed call)", summarise(us));
   }
 
   // one robot against the scene
@@ -206,7 +163,7 @@ int main(int argc, char** argv) try {
     std::vector<Eigen::VectorXd> qs;
     qs.reserve(static_cast<std::size_t>(checks));
     for (int i = 0; i < checks; ++i) qs.push_back(randomConfiguration(*robots[0].model, rng));
-    benchQueries(checker, name, qs, [&](const Eigen::VectorXd& q) { return checker.robotFree(0, q, objects, held); });
+    benchQueries(table, checker, name, qs, [&](const Eigen::VectorXd& q) { return checker.robotFree(0, q, objects, held); });
   };
   robotBench("robotFree (uniform in limits)", std::nullopt);
   if (!world.objects.empty()) {
@@ -222,7 +179,7 @@ int main(int argc, char** argv) try {
         qs.emplace_back(reaching ? reachingConfiguration(robots[0], rng) : randomConfiguration(*robots[0].model, rng),
                         reaching ? reachingConfiguration(robots[1], rng) : randomConfiguration(*robots[1].model, rng));
       }
-      benchQueries(checker, name, qs, [&](const auto& pair) {
+      benchQueries(table, checker, name, qs, [&](const auto& pair) {
         return checker.robotsFree(0, pair.first, std::nullopt, 1, pair.second, std::nullopt);
       });
     };
@@ -264,13 +221,12 @@ int main(int argc, char** argv) try {
                   steps / static_cast<double>(ms.size()), evaluated_total / static_cast<double>(ms.size()));
     Stats stats = summarise(all);
     stats.cpu_mean = cpu_per_motion;
-    printRow("motionFree (free ends, +-0.5 rad), all", stats, note);
-    printRow("motionFree, free motions", summarise(free));
-    printRow("motionFree, blocked motions", summarise(hit));
-    printRow("motionFree, free motions, per evaluated sample", summarise(per_sample));
+    addRow(table, "motionFree (free ends, +-0.5 rad), all", stats, note);
+    addRow(table, "motionFree, free motions", summarise(free));
+    addRow(table, "motionFree, blocked motions", summarise(hit));
+    addRow(table, "motionFree, free motions, per evaluated sample", summarise(per_sample));
   }
-  return 0;
-} catch (const std::exception& e) {
-  std::fprintf(stderr, "dashbed_bench_collision: %s\n", e.what());
-  return 1;
+  return table;
 }
+
+}  // namespace dashbed::tools
