@@ -122,6 +122,25 @@ struct ActionTrack {
   double placement_speed = 0.0;
 };
 
+/// A measurement and whether it passed (`comparison`: "<=", ">=" or "==" against `threshold`;
+/// passed when there is no threshold).
+Measurement measure(std::string name, double value, std::string unit, std::optional<double> threshold = {},
+                    std::string comparison = "") {
+  Measurement m{std::move(name), value, std::move(unit), threshold, std::move(comparison), true};
+  if (threshold) {
+    m.passed = m.comparison == "<=" ? value <= *threshold : m.comparison == ">=" ? value >= *threshold : value == *threshold;
+  }
+  return m;
+}
+
+/// Contacts of one step, as the checks read them.
+struct StepContacts {
+  std::vector<std::set<int>> left, right;               // per robot: objects its left / right finger touches
+  std::vector<bool> support;                            // per object: touches scenery or another object
+  std::vector<std::vector<std::string>> touched_by;     // per object: everything touching it
+  std::map<std::string, Eigen::Vector3d> unplanned;     // unplanned pair -> a contact point
+};
+
 }  // namespace
 
 struct Monitor::State {
@@ -237,6 +256,458 @@ struct Monitor::State {
     return false;
   }
 
+  /// Who touches what after the step just taken.
+  StepContacts contactsNow(double t) {
+    StepContacts now;
+    now.left.resize(world.robots.size());
+    now.right.resize(world.robots.size());
+    now.support.assign(world.objects.size(), false);
+    now.touched_by.resize(world.objects.size());
+    auto& [left, right, support, touched_by, unplanned_now] = now;
+    for (const Contact& c : sim.contacts()) {
+      for (int side = 0; side < 2; ++side) {
+        const BodyRef& a = side == 0 ? c.a : c.b;
+        const BodyRef& b = side == 0 ? c.b : c.a;
+        if (a.kind != BodyRef::Kind::kObject) continue;
+        touched_by[a.index].push_back(bodyName(b));
+        if (b.kind == BodyRef::Kind::kRobot) {
+          last_toucher[a.index] = b.index;
+          if (b.link == left_finger[b.index]) left[b.index].insert(a.index);
+          if (b.link == right_finger[b.index]) right[b.index].insert(a.index);
+          const bool planned = isFinger(b) && (inActionWith(b.index, a.index, t) ||
+                                                 (active_hold[b.index] >= 0 && holds[active_hold[b.index]].object == a.index) ||
+                                                 releasedRecently(b.index, a.index, t));
+          if (!planned) unplanned_now.emplace(bodyName(b) + " touches " + bodyName(a), c.point_W);
+        } else {
+          support[a.index] = true;
+        }
+      }
+      if (c.a.kind == BodyRef::Kind::kRobot || c.b.kind == BodyRef::Kind::kRobot) {
+        const BodyRef& robot = c.a.kind == BodyRef::Kind::kRobot ? c.a : c.b;
+        const BodyRef& other = c.a.kind == BodyRef::Kind::kRobot ? c.b : c.a;
+        if (other.kind == BodyRef::Kind::kRobot && other.index != robot.index) {
+          unplanned_now.emplace("robot-robot contact: " + bodyName(c.a) + " touches " + bodyName(c.b), c.point_W);
+        } else if (other.kind == BodyRef::Kind::kFixture || other.kind == BodyRef::Kind::kFloor) {
+          unplanned_now.emplace("robot-fixture contact: " + bodyName(robot) + " touches " + bodyName(other), c.point_W);
+        }
+      }
+    }
+    return now;
+  }
+
+  /// An unplanned contact becomes an event when its pair starts touching after a while apart.
+  void reportUnplannedContacts(const StepContacts& now, double t) {
+    // an unplanned pair is reported when it starts touching after a while apart (contacts
+    // chatter for a few steps while bodies push against each other)
+    for (const auto& [pair, point_W] : now.unplanned) {
+      const auto last = last_touch.find(pair);
+      const bool ongoing = last != last_touch.end() && t - last->second < kContactGap;
+      last_touch[pair] = t;
+      if (ongoing) continue;
+      const auto colon = pair.find(':');
+      const std::string kind = colon == std::string::npos ? "unplanned contact with object" : pair.substr(0, colon);
+      const std::string detail = colon == std::string::npos ? pair : pair.substr(colon + 2);
+      // attribute to an action of the first robot named in the pair
+      int robot = -1;
+      for (std::size_t r = 0; r < world.robots.size() && robot < 0; ++r) {
+        if (detail.rfind(world.robots[r].name + "/", 0) == 0) robot = static_cast<int>(r);
+      }
+      addEvent(t, kind, detail, robot >= 0 ? attribute(robot, -1, t) : nullptr, point_W);
+    }
+
+  }
+
+  /// Grasp episodes: a closed gripper with both pads on an object holds it; its slip in the TCP
+  /// frame is sampled every step; opening it outside a place or handoff, or losing the object
+  /// while closed, is a drop.
+  void trackHolds(const PlanExecutor& executor, const StepContacts& now, double t) {
+    const auto& left = now.left;
+    const auto& right = now.right;
+    // grasp episodes
+    for (std::size_t r = 0; r < world.robots.size(); ++r) {
+      const bool closed = executor.gripper(static_cast<int>(r)).state() == GripperAction::kClose;
+      int& active = active_hold[r];
+      if (active < 0) {
+        if (!closed) continue;
+        for (int o : left[r]) {
+          if (right[r].count(o) == 0) continue;
+          HoldEpisode episode;
+          episode.robot = static_cast<int>(r);
+          episode.object = o;
+          episode.grasp_time = t;
+          holds.push_back(episode);
+          active = static_cast<int>(holds.size()) - 1;
+          break;
+        }
+        continue;
+      }
+      HoldEpisode& hold = holds[active];
+      if (!closed) {
+        hold.release_time = t;
+        active = -1;
+        if (!releaseIsPlanned(static_cast<int>(r), hold.object, t)) {
+          hold.drop_time = t;
+          addEvent(t, "drop",
+                     world.robots[r].name + " opened its gripper holding " + world.objects[hold.object].name +
+                         " outside any place or handoff",
+                     attribute(static_cast<int>(r), hold.object, t), sim.objectPose(hold.object).translation());
+        }
+        continue;
+      }
+      const bool both = left[r].count(hold.object) != 0 && right[r].count(hold.object) != 0;
+      const Pose X_TO = sim.linkPose(static_cast<int>(r), tcp[r]).inverse() * sim.objectPose(hold.object);
+      if (both) {
+        hold.lost_since.reset();
+        if (!hold.reference_set && t - hold.grasp_time >= kGraspSettle) {
+          hold.reference_set = true;
+          hold.X_TO_reference = X_TO;
+        }
+        if (hold.reference_set) {
+          const double slip = (X_TO.translation() - hold.X_TO_reference.translation()).norm();
+          const double angle = rotationAngle(hold.X_TO_reference.linear().transpose() * X_TO.linear());
+          hold.slip_samples.push_back({t, slip, angle});
+          if (hold.slip_time < 0 && (slip > world.checks.slip_tolerance || angle > world.checks.slip_angle_tolerance)) {
+            hold.slip_time = t;
+            addEvent(t, "slip",
+                       world.objects[hold.object].name + " slipped " + fmt(slip * 1e3) + " mm / " + fmt(angle) +
+                           " rad in the gripper of " + world.robots[r].name,
+                       attribute(static_cast<int>(r), hold.object, t), sim.objectPose(hold.object).translation());
+          }
+        }
+      } else {
+        if (!hold.lost_since) hold.lost_since = t;
+        if (t - *hold.lost_since >= kDropDebounce) {
+          hold.drop_time = *hold.lost_since;
+          addEvent(*hold.lost_since, "drop",
+                     world.robots[r].name + " lost " + world.objects[hold.object].name + " with its gripper closed",
+                     attribute(static_cast<int>(r), hold.object, *hold.lost_since),
+                     sim.objectPose(hold.object).translation());
+          active = -1;
+        }
+      }
+    }
+
+  }
+
+  /// Knocked objects: an object nobody is manipulating moves away from where it rested.
+  void trackRestingObjects(const StepContacts& now, double t) {
+    const auto& touched_by = now.touched_by;
+    // knocked objects: an object nobody is manipulating moves away from where it rested
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+      const int oi = static_cast<int>(o);
+      bool manipulated = false;
+      for (std::size_t r = 0; r < world.robots.size(); ++r) {
+        if ((active_hold[r] >= 0 && holds[active_hold[r]].object == oi) || inActionWith(static_cast<int>(r), oi, t)) {
+          manipulated = true;
+        }
+      }
+      const Pose X = sim.objectPose(oi);
+      const double speed = sim.objectLinearVelocity(oi).norm();
+      // while manipulated, and after a release until the object comes to rest, its rest pose
+      // follows it: only an object that has settled can be knocked
+      if (manipulated) {
+        settling[o] = true;
+        rest_since[o].reset();
+      }
+      if (settling[o]) {
+        rest_pose[o] = X;
+        knocked[o] = false;
+        // settled once it has stayed at rest for kSettledAfter (a released object may hang
+        // still for a moment before it falls)
+        if (manipulated || speed >= world.checks.rest_speed) {
+          rest_since[o].reset();
+        } else if (!rest_since[o]) {
+          rest_since[o] = t;
+        } else if (t - *rest_since[o] >= kSettledAfter) {
+          settling[o] = false;
+        }
+        continue;
+      }
+      const double moved = (X.translation() - rest_pose[o].translation()).norm();
+      const double turned = rotationAngle(rest_pose[o].linear().transpose() * X.linear());
+      if (!knocked[o] && (moved > kKnockDistance || turned > kKnockAngle)) {
+        knocked[o] = true;
+        const int toucher = last_toucher[o];
+        std::string detail = world.objects[o].name + " moved " + fmt(moved * 1e3) + " mm / turned " + fmt(turned) + " rad from rest";
+        if (toucher >= 0) detail += " (last touched by " + world.robots[toucher].name + ")";
+        addEvent(t, "knocked object", detail, toucher >= 0 ? attribute(toucher, -1, t) : attribute(-1, oi, t),
+                   X.translation());
+      }
+      // at rest and untouched by robots: this is its new rest pose
+      const bool robot_touching = std::any_of(touched_by[o].begin(), touched_by[o].end(), [&](const std::string& name) {
+        return name.find('/') != std::string::npos;
+      });
+      if (speed < world.checks.rest_speed && !robot_touching && !knocked[o]) rest_pose[o] = X;
+    }
+
+  }
+
+  /// What each action's checks need from this step: pads on the object, lift, handoff overlap and
+  /// foreign contacts, the placement after its settle time.
+  void observeActions(const StepContacts& now, double t) {
+    const double dt = sim.timeStep();
+    const auto& left = now.left;
+    const auto& right = now.right;
+    const auto& support = now.support;
+    const auto& touched_by = now.touched_by;
+    // per-action observations
+    for (ActionTrack& a : actions) {
+      if (a.object < 0) continue;
+      const core::PlanAction& action = *a.action;
+      switch (action.type) {
+        case ActionType::kPick: {
+          if (a.command_time && !a.close_z && t >= *a.command_time) a.close_z = sim.objectPose(a.object).translation().z();
+          if (a.command_time && !a.both_pads_time && t >= *a.command_time && a.robot >= 0 &&
+              left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0) {
+            a.both_pads_time = t;
+          }
+          if (!a.end_sampled && t >= action.end) {
+            a.end_sampled = true;
+            a.held_at_end = a.robot >= 0 && left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0;
+            a.support_contact_at_end = support[a.object];
+            // from where this pick found it (a second pick of a placed object starts elsewhere)
+            a.lift_height = sim.objectPose(a.object).translation().z() - a.close_z.value_or(start_z[a.object]);
+          }
+          break;
+        }
+        case ActionType::kHandoff: {
+          if (t < action.start || t > action.end || a.robot < 0 || a.receiver < 0) break;
+          const bool giver = left[a.robot].count(a.object) && right[a.robot].count(a.object);
+          const bool receiver = left[a.receiver].count(a.object) && right[a.receiver].count(a.object);
+          // holding together until the giver is told to open (its pads count as touching while
+          // within 1 mm, some milliseconds after)
+          if (giver && receiver && (!a.command2_time || t < *a.command2_time)) a.overlap += dt;
+          for (const std::string& name : touched_by[a.object]) {
+            const bool gripper = name.rfind(world.robots[a.robot].name + "/", 0) == 0 ||
+                                 name.rfind(world.robots[a.receiver].name + "/", 0) == 0;
+            if (!gripper && std::find(a.foreign_contacts.begin(), a.foreign_contacts.end(), name) == a.foreign_contacts.end()) {
+              a.foreign_contacts.push_back(name);
+            }
+          }
+          a.giver_touching_at_end = left[a.robot].count(a.object) || right[a.robot].count(a.object);
+          a.held_at_end = receiver;
+          break;
+        }
+        case ActionType::kPlace: {
+          if (!a.command_time || a.placement_sampled) break;
+          if (t >= std::max(*a.command_time + world.checks.settle_time, action.end)) {
+            a.placement_sampled = true;
+            a.placement_time = t;
+            a.placement_pose = sim.objectPose(a.object);
+            a.placement_speed = sim.objectLinearVelocity(a.object).norm();
+          }
+          break;
+        }
+      }
+    }
+  }
+
+  /// The hold of `object` by `robot` that started within [from, to], or null.
+  const HoldEpisode* episodeOf(int robot, int object, double from, double to) const {
+    for (const HoldEpisode& h : holds) {
+      if (h.robot == robot && h.object == object && h.grasp_time >= from - 1e-9 && h.grasp_time <= to + 1e-9) return &h;
+    }
+    return nullptr;
+  }
+
+  /// Whether X_WO's origin is inside `region` within the placement tolerance; `outside`: by how far not.
+  bool insideRegion(const core::Region& region, const Pose& X_WO, double& outside) const {
+    outside = core::distanceOutside(region, X_WO.translation(), world.checks.placement_tolerance);
+    return outside <= 0.0;
+  }
+
+  /// Pick: both pads on the object after the close command; at the pick's end held, off its
+  /// support, lifted by the lift clearance, and within the slip tolerances while lifting.
+  void judgePick(const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) const {
+    const core::CheckSettings& checks = world.checks;
+    const core::PlanAction& action = *a.action;
+    const std::string& object = action.object;
+    if (!a.command_time) {
+      failures.push_back("grasp: the plan does not close " + action.robot + "'s gripper during the pick");
+      return;
+    }
+    r.measurements.push_back(measure("both_pads_contact", a.both_pads_time ? 1.0 : 0.0, "bool", 1.0, "=="));
+    if (!a.both_pads_time) {
+      failures.push_back("grasp: after closing at " + fmt(*a.command_time) + " s the pads of " + action.robot +
+                         " never both touched " + object);
+      return;
+    }
+    r.observed_start = *a.both_pads_time;
+    const HoldEpisode* hold = episodeOf(a.robot, a.object, *a.command_time, action.end);
+    r.measurements.push_back(measure("held_at_end", a.held_at_end ? 1.0 : 0.0, "bool", 1.0, "=="));
+    r.measurements.push_back(measure("support_contact_at_end", a.support_contact_at_end ? 1.0 : 0.0, "bool", 0.0, "=="));
+    r.measurements.push_back(measure("lift_height", a.lift_height, "m", checks.lift_clearance, ">="));
+    if (!a.held_at_end) failures.push_back("grasp: " + object + " not held by both pads at the end of the pick");
+    if (a.support_contact_at_end) failures.push_back("lift: " + object + " still touches its support at " + fmt(action.end) + " s");
+    if (a.lift_height < checks.lift_clearance) {
+      failures.push_back("lift: " + object + " raised " + fmt(a.lift_height * 1e3) + " mm < " +
+                         fmt(checks.lift_clearance * 1e3) + " mm");
+    }
+    if (hold != nullptr) {
+      // slip while lifting; later slip is judged by the action then in progress
+      const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
+      r.measurements.push_back(measure("slip", slip, "m", checks.slip_tolerance, "<="));
+      r.measurements.push_back(measure("slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
+      if (slip > checks.slip_tolerance) {
+        failures.push_back("slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+      }
+      if (angle > checks.slip_angle_tolerance) {
+        failures.push_back("slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+      }
+      if (a.held_at_end && !a.support_contact_at_end) r.observed_end = action.end;
+    }
+  }
+
+  /// Handoff: both grippers hold the object together for the minimum overlap before the giver
+  /// opens; then the receiver holds it within the slip tolerances, the giver no longer touches it,
+  /// and nothing but the two grippers touched it meanwhile.
+  void judgeHandoff(const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) const {
+    const core::CheckSettings& checks = world.checks;
+    const core::PlanAction& action = *a.action;
+    const std::string& object = action.object;
+    if (!a.command_time || !a.command2_time || *a.command2_time <= *a.command_time) {
+      failures.push_back("handoff: the plan must close " + action.receiver + "'s gripper before opening " +
+                         action.robot + "'s during the handoff");
+      return;
+    }
+    r.measurements.push_back(measure("overlap", a.overlap, "s", kMinHandoffOverlap, ">="));
+    r.measurements.push_back(measure("receiver_holds_at_end", a.held_at_end ? 1.0 : 0.0, "bool", 1.0, "=="));
+    r.measurements.push_back(measure("giver_touches_at_end", a.giver_touching_at_end ? 1.0 : 0.0, "bool", 0.0, "=="));
+    r.measurements.push_back(measure("foreign_contacts", static_cast<double>(a.foreign_contacts.size()), "count", 0.0, "=="));
+    if (a.overlap < kMinHandoffOverlap) {
+      failures.push_back("overlap: both grippers held " + object + " together for " + fmt(a.overlap) + " s < " +
+                         fmt(kMinHandoffOverlap) + " s");
+    }
+    if (!a.held_at_end) failures.push_back("transfer: " + action.receiver + " does not hold " + object + " at the end");
+    if (a.giver_touching_at_end) failures.push_back("transfer: " + action.robot + " still touches " + object + " at the end");
+    for (const std::string& name : a.foreign_contacts) failures.push_back("handoff: " + object + " touched " + name);
+    const HoldEpisode* hold = episodeOf(a.receiver, a.object, action.start, action.end);
+    if (hold != nullptr) {
+      r.observed_start = hold->grasp_time;
+      const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
+      r.measurements.push_back(measure("receiver_slip", slip, "m", checks.slip_tolerance, "<="));
+      r.measurements.push_back(measure("receiver_slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
+      if (slip > checks.slip_tolerance) {
+        failures.push_back("receiver slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+      }
+      if (angle > checks.slip_angle_tolerance) {
+        failures.push_back("receiver slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+      }
+    }
+    if (a.held_at_end) r.observed_end = *a.command2_time;
+  }
+
+  /// A place without a region sets the object aside on a stable surface, to be picked up again:
+  /// a settle time after release it is at rest there, flat on a face.
+  void judgeSetAside(const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) const {
+    const core::CheckSettings& checks = world.checks;
+    const std::string& object = a.action->object;
+    if (!a.placement_sampled) {
+      failures.push_back("set aside: the run ended before the settle time after release");
+      return;
+    }
+    const double tilt = tiltFromFlat(a.placement_pose);
+    const std::optional<double> gap =
+        gapToSurface(world, a.placement_pose, world.objects[static_cast<std::size_t>(a.object)].size);
+    r.measurements.push_back(measure("speed_after_settle", a.placement_speed, "m/s", checks.rest_speed, "<="));
+    r.measurements.push_back(measure("tilt", tilt, "rad", checks.upright_tolerance, "<="));
+    r.measurements.push_back(measure("gap_to_surface", gap.value_or(std::numeric_limits<double>::infinity()), "m",
+                                     kSurfaceContact, "<="));
+    if (a.placement_speed > checks.rest_speed) {
+      failures.push_back("set aside: " + object + " still moving at " + fmt(a.placement_speed) + " m/s > " +
+                         fmt(checks.rest_speed) + " m/s");
+    }
+    if (tilt > checks.upright_tolerance) {
+      failures.push_back("set aside: " + object + " tilted " + fmt(tilt) + " rad > " + fmt(checks.upright_tolerance) + " rad");
+    }
+    if (!gap || *gap > kSurfaceContact) {
+      failures.push_back("set aside: " + object + (gap ? " rests " + fmt(*gap * 1e3) + " mm off" : " is over no") +
+                         " stable surface");
+    }
+    if (failures.empty()) r.observed_end = *a.placement_time;
+  }
+
+  /// Place: a settle time after release the object is at rest inside its region, upright within
+  /// the tolerance, and still inside at the end.
+  void judgePlace(const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) const {
+    const core::CheckSettings& checks = world.checks;
+    const core::PlanAction& action = *a.action;
+    const std::string& object = action.object;
+    if (!a.command_time) {
+      failures.push_back("placement: the plan does not open " + action.robot + "'s gripper during the place");
+      return;
+    }
+    r.observed_start = *a.command_time;
+    if (action.region.empty()) {  // set aside on a surface, to be picked up again
+      judgeSetAside(a, r, failures);
+      return;
+    }
+    if (a.region < 0) {
+      failures.push_back("placement: unknown region " + action.region);
+      return;
+    }
+    if (!a.placement_sampled) {
+      failures.push_back("placement: the run ended before the settle time after release");
+      return;
+    }
+    const core::Region& region = world.regions[a.region];
+    double outside = 0.0;
+    const bool inside = insideRegion(region, a.placement_pose, outside);
+    const double tilt = tiltFromFlat(a.placement_pose);
+    double final_outside = 0.0;
+    const bool stays = insideRegion(region, sim.objectPose(a.object), final_outside);
+    r.measurements.push_back(measure("distance_outside_region", outside, "m", 0.0, "<="));
+    r.measurements.push_back(measure("speed_after_settle", a.placement_speed, "m/s", checks.rest_speed, "<="));
+    r.measurements.push_back(measure("tilt", tilt, "rad", checks.upright_tolerance, "<="));
+    r.measurements.push_back(measure("distance_outside_region_at_end", final_outside, "m", 0.0, "<="));
+    if (!inside) failures.push_back("placement: " + object + " is " + fmt(outside * 1e3) + " mm outside " + region.name);
+    if (a.placement_speed > checks.rest_speed) {
+      failures.push_back("placement: " + object + " still moving at " + fmt(a.placement_speed) + " m/s > " +
+                         fmt(checks.rest_speed) + " m/s");
+    }
+    if (tilt > checks.upright_tolerance) {
+      failures.push_back("placement: " + object + " tilted " + fmt(tilt) + " rad > " + fmt(checks.upright_tolerance) + " rad");
+    }
+    if (inside && !stays) failures.push_back("placement: " + object + " left " + region.name + " before the end");
+    if (inside && a.placement_speed <= checks.rest_speed) r.observed_end = *a.placement_time;
+  }
+
+  /// The execution: joint tracking within its limit, no event but slips (judged by the actions),
+  /// and every object the world's goals send to a region inside it at the end. Returns the
+  /// failures; fills the report's per-robot execution numbers.
+  std::vector<std::string> judgeExecution(const PlanExecutor& executor, Report& report) const {
+    const core::CheckSettings& checks = world.checks;
+    std::vector<std::string> failures;
+    for (std::size_t r = 0; r < world.robots.size(); ++r) {
+      const TrackingStats& stats = executor.tracking(static_cast<int>(r));
+      RobotExecution execution;
+      execution.robot = world.robots[r].name;
+      execution.max_tracking_error = stats.max_tracking_error;
+      execution.torque_saturation = stats.steps > 0 ? static_cast<double>(stats.saturated_steps) / static_cast<double>(stats.steps) : 0.0;
+      execution.max_effort_ratio = stats.max_effort_ratio;
+      report.robots.push_back(execution);
+      if (stats.max_tracking_error > checks.tracking_error_limit) {
+        failures.push_back("tracking: " + execution.robot + " " + jointName(static_cast<int>(r), stats.max_error_joint) +
+                           " error " + fmt(stats.max_tracking_error) + " rad > " + fmt(checks.tracking_error_limit) +
+                           " rad at " + fmt(stats.max_error_time) + " s");
+      }
+    }
+    for (const ExecutionEvent& event : events) {
+      if (event.kind == "slip") continue;  // judged by the grasp and handoff checks
+      failures.push_back(event.kind + " at " + fmt(event.t) + " s: " + event.detail);
+    }
+    // the world's goals: every object sent to a region ends inside it, placed by the plan or not
+    for (std::size_t o = 0; o < world.objects.size(); ++o) {
+      const core::ObjectSpec& object = world.objects[o];
+      const core::Region* region = world.goalRegionOf(object);
+      double outside = 0.0;
+      if (region != nullptr && !insideRegion(*region, sim.objectPose(static_cast<int>(o)), outside)) {
+        failures.push_back("goal: " + object.name + " ends " + fmt(outside * 1e3) + " mm outside " + region->name);
+      }
+    }
+    return failures;
+  }
+
   static std::string actionId(const core::PlanAction& a) {
     switch (a.type) {
       case ActionType::kPick: return "pick " + a.object + " by " + a.robot;
@@ -304,282 +775,20 @@ const std::vector<ExecutionEvent>& Monitor::events() const { return state_->even
 void Monitor::observe(const PlanExecutor& executor) {
   State& s = *state_;
   const double t = s.planTime();
-  const double dt = s.sim.timeStep();
-  const std::size_t num_robots = s.world.robots.size();
-  const std::size_t num_objects = s.world.objects.size();
-
-  // who touches what
-  std::vector<std::set<int>> left(num_robots), right(num_robots);   // objects touched by each finger
-  std::vector<bool> support(num_objects, false);                    // object touches scenery or another object
-  std::vector<std::vector<std::string>> touched_by(num_objects);    // everything touching each object
-  std::map<std::string, Eigen::Vector3d> unplanned_now;  // pair -> a contact point
-  for (const Contact& c : s.sim.contacts()) {
-    for (int side = 0; side < 2; ++side) {
-      const BodyRef& a = side == 0 ? c.a : c.b;
-      const BodyRef& b = side == 0 ? c.b : c.a;
-      if (a.kind != BodyRef::Kind::kObject) continue;
-      touched_by[a.index].push_back(s.bodyName(b));
-      if (b.kind == BodyRef::Kind::kRobot) {
-        s.last_toucher[a.index] = b.index;
-        if (b.link == s.left_finger[b.index]) left[b.index].insert(a.index);
-        if (b.link == s.right_finger[b.index]) right[b.index].insert(a.index);
-        const bool planned = s.isFinger(b) && (s.inActionWith(b.index, a.index, t) ||
-                                               (s.active_hold[b.index] >= 0 && s.holds[s.active_hold[b.index]].object == a.index) ||
-                                               s.releasedRecently(b.index, a.index, t));
-        if (!planned) unplanned_now.emplace(s.bodyName(b) + " touches " + s.bodyName(a), c.point_W);
-      } else {
-        support[a.index] = true;
-      }
-    }
-    if (c.a.kind == BodyRef::Kind::kRobot || c.b.kind == BodyRef::Kind::kRobot) {
-      const BodyRef& robot = c.a.kind == BodyRef::Kind::kRobot ? c.a : c.b;
-      const BodyRef& other = c.a.kind == BodyRef::Kind::kRobot ? c.b : c.a;
-      if (other.kind == BodyRef::Kind::kRobot && other.index != robot.index) {
-        unplanned_now.emplace("robot-robot contact: " + s.bodyName(c.a) + " touches " + s.bodyName(c.b), c.point_W);
-      } else if (other.kind == BodyRef::Kind::kFixture || other.kind == BodyRef::Kind::kFloor) {
-        unplanned_now.emplace("robot-fixture contact: " + s.bodyName(robot) + " touches " + s.bodyName(other), c.point_W);
-      }
-    }
-  }
-  // an unplanned pair is reported when it starts touching after a while apart (contacts
-  // chatter for a few steps while bodies push against each other)
-  for (const auto& [pair, point_W] : unplanned_now) {
-    const auto last = s.last_touch.find(pair);
-    const bool ongoing = last != s.last_touch.end() && t - last->second < kContactGap;
-    s.last_touch[pair] = t;
-    if (ongoing) continue;
-    const auto colon = pair.find(':');
-    const std::string kind = colon == std::string::npos ? "unplanned contact with object" : pair.substr(0, colon);
-    const std::string detail = colon == std::string::npos ? pair : pair.substr(colon + 2);
-    // attribute to an action of the first robot named in the pair
-    int robot = -1;
-    for (std::size_t r = 0; r < num_robots && robot < 0; ++r) {
-      if (detail.rfind(s.world.robots[r].name + "/", 0) == 0) robot = static_cast<int>(r);
-    }
-    s.addEvent(t, kind, detail, robot >= 0 ? s.attribute(robot, -1, t) : nullptr, point_W);
-  }
-
-  // grasp episodes
-  for (std::size_t r = 0; r < num_robots; ++r) {
-    const bool closed = executor.gripper(static_cast<int>(r)).state() == GripperAction::kClose;
-    int& active = s.active_hold[r];
-    if (active < 0) {
-      if (!closed) continue;
-      for (int o : left[r]) {
-        if (right[r].count(o) == 0) continue;
-        HoldEpisode episode;
-        episode.robot = static_cast<int>(r);
-        episode.object = o;
-        episode.grasp_time = t;
-        s.holds.push_back(episode);
-        active = static_cast<int>(s.holds.size()) - 1;
-        break;
-      }
-      continue;
-    }
-    HoldEpisode& hold = s.holds[active];
-    if (!closed) {
-      hold.release_time = t;
-      active = -1;
-      if (!s.releaseIsPlanned(static_cast<int>(r), hold.object, t)) {
-        hold.drop_time = t;
-        s.addEvent(t, "drop",
-                   s.world.robots[r].name + " opened its gripper holding " + s.world.objects[hold.object].name +
-                       " outside any place or handoff",
-                   s.attribute(static_cast<int>(r), hold.object, t), s.sim.objectPose(hold.object).translation());
-      }
-      continue;
-    }
-    const bool both = left[r].count(hold.object) != 0 && right[r].count(hold.object) != 0;
-    const Pose X_TO = s.sim.linkPose(static_cast<int>(r), s.tcp[r]).inverse() * s.sim.objectPose(hold.object);
-    if (both) {
-      hold.lost_since.reset();
-      if (!hold.reference_set && t - hold.grasp_time >= kGraspSettle) {
-        hold.reference_set = true;
-        hold.X_TO_reference = X_TO;
-      }
-      if (hold.reference_set) {
-        const double slip = (X_TO.translation() - hold.X_TO_reference.translation()).norm();
-        const double angle = rotationAngle(hold.X_TO_reference.linear().transpose() * X_TO.linear());
-        hold.slip_samples.push_back({t, slip, angle});
-        if (hold.slip_time < 0 && (slip > s.world.checks.slip_tolerance || angle > s.world.checks.slip_angle_tolerance)) {
-          hold.slip_time = t;
-          s.addEvent(t, "slip",
-                     s.world.objects[hold.object].name + " slipped " + fmt(slip * 1e3) + " mm / " + fmt(angle) +
-                         " rad in the gripper of " + s.world.robots[r].name,
-                     s.attribute(static_cast<int>(r), hold.object, t), s.sim.objectPose(hold.object).translation());
-        }
-      }
-    } else {
-      if (!hold.lost_since) hold.lost_since = t;
-      if (t - *hold.lost_since >= kDropDebounce) {
-        hold.drop_time = *hold.lost_since;
-        s.addEvent(*hold.lost_since, "drop",
-                   s.world.robots[r].name + " lost " + s.world.objects[hold.object].name + " with its gripper closed",
-                   s.attribute(static_cast<int>(r), hold.object, *hold.lost_since),
-                   s.sim.objectPose(hold.object).translation());
-        active = -1;
-      }
-    }
-  }
-
-  // knocked objects: an object nobody is manipulating moves away from where it rested
-  for (std::size_t o = 0; o < num_objects; ++o) {
-    const int oi = static_cast<int>(o);
-    bool manipulated = false;
-    for (std::size_t r = 0; r < num_robots; ++r) {
-      if ((s.active_hold[r] >= 0 && s.holds[s.active_hold[r]].object == oi) || s.inActionWith(static_cast<int>(r), oi, t)) {
-        manipulated = true;
-      }
-    }
-    const Pose X = s.sim.objectPose(oi);
-    const double speed = s.sim.objectLinearVelocity(oi).norm();
-    // while manipulated, and after a release until the object comes to rest, its rest pose
-    // follows it: only an object that has settled can be knocked
-    if (manipulated) {
-      s.settling[o] = true;
-      s.rest_since[o].reset();
-    }
-    if (s.settling[o]) {
-      s.rest_pose[o] = X;
-      s.knocked[o] = false;
-      // settled once it has stayed at rest for kSettledAfter (a released object may hang
-      // still for a moment before it falls)
-      if (manipulated || speed >= s.world.checks.rest_speed) {
-        s.rest_since[o].reset();
-      } else if (!s.rest_since[o]) {
-        s.rest_since[o] = t;
-      } else if (t - *s.rest_since[o] >= kSettledAfter) {
-        s.settling[o] = false;
-      }
-      continue;
-    }
-    const double moved = (X.translation() - s.rest_pose[o].translation()).norm();
-    const double turned = rotationAngle(s.rest_pose[o].linear().transpose() * X.linear());
-    if (!s.knocked[o] && (moved > kKnockDistance || turned > kKnockAngle)) {
-      s.knocked[o] = true;
-      const int toucher = s.last_toucher[o];
-      std::string detail = s.world.objects[o].name + " moved " + fmt(moved * 1e3) + " mm / turned " + fmt(turned) + " rad from rest";
-      if (toucher >= 0) detail += " (last touched by " + s.world.robots[toucher].name + ")";
-      s.addEvent(t, "knocked object", detail, toucher >= 0 ? s.attribute(toucher, -1, t) : s.attribute(-1, oi, t),
-                 X.translation());
-    }
-    // at rest and untouched by robots: this is its new rest pose
-    const bool robot_touching = std::any_of(touched_by[o].begin(), touched_by[o].end(), [&](const std::string& name) {
-      return name.find('/') != std::string::npos;
-    });
-    if (speed < s.world.checks.rest_speed && !robot_touching && !s.knocked[o]) s.rest_pose[o] = X;
-  }
-
-  // per-action observations
-  for (ActionTrack& a : s.actions) {
-    if (a.object < 0) continue;
-    const core::PlanAction& action = *a.action;
-    switch (action.type) {
-      case ActionType::kPick: {
-        if (a.command_time && !a.close_z && t >= *a.command_time) a.close_z = s.sim.objectPose(a.object).translation().z();
-        if (a.command_time && !a.both_pads_time && t >= *a.command_time && a.robot >= 0 &&
-            left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0) {
-          a.both_pads_time = t;
-        }
-        if (!a.end_sampled && t >= action.end) {
-          a.end_sampled = true;
-          a.held_at_end = a.robot >= 0 && left[a.robot].count(a.object) != 0 && right[a.robot].count(a.object) != 0;
-          a.support_contact_at_end = support[a.object];
-          // from where this pick found it (a second pick of a placed object starts elsewhere)
-          a.lift_height = s.sim.objectPose(a.object).translation().z() - a.close_z.value_or(s.start_z[a.object]);
-        }
-        break;
-      }
-      case ActionType::kHandoff: {
-        if (t < action.start || t > action.end || a.robot < 0 || a.receiver < 0) break;
-        const bool giver = left[a.robot].count(a.object) && right[a.robot].count(a.object);
-        const bool receiver = left[a.receiver].count(a.object) && right[a.receiver].count(a.object);
-        // holding together until the giver is told to open (its pads count as touching while
-        // within 1 mm, some milliseconds after)
-        if (giver && receiver && (!a.command2_time || t < *a.command2_time)) a.overlap += dt;
-        for (const std::string& name : touched_by[a.object]) {
-          const bool gripper = name.rfind(s.world.robots[a.robot].name + "/", 0) == 0 ||
-                               name.rfind(s.world.robots[a.receiver].name + "/", 0) == 0;
-          if (!gripper && std::find(a.foreign_contacts.begin(), a.foreign_contacts.end(), name) == a.foreign_contacts.end()) {
-            a.foreign_contacts.push_back(name);
-          }
-        }
-        a.giver_touching_at_end = left[a.robot].count(a.object) || right[a.robot].count(a.object);
-        a.held_at_end = receiver;
-        break;
-      }
-      case ActionType::kPlace: {
-        if (!a.command_time || a.placement_sampled) break;
-        if (t >= std::max(*a.command_time + s.world.checks.settle_time, action.end)) {
-          a.placement_sampled = true;
-          a.placement_time = t;
-          a.placement_pose = s.sim.objectPose(a.object);
-          a.placement_speed = s.sim.objectLinearVelocity(a.object).norm();
-        }
-        break;
-      }
-    }
-  }
+  const StepContacts now = s.contactsNow(t);
+  s.reportUnplannedContacts(now, t);
+  s.trackHolds(executor, now, t);
+  s.trackRestingObjects(now, t);
+  s.observeActions(now, t);
 }
 
 Report Monitor::finish(const PlanExecutor& executor) {
   State& s = *state_;
-  const core::CheckSettings& checks = s.world.checks;
   Report report;
   report.world = s.world.name;
   report.seed = s.plan.seed;
   report.time_step = s.sim.timeStep();
   report.simulated_time = s.planTime();
-
-  const auto measure = [](std::string name, double value, std::string unit, std::optional<double> threshold = {},
-                          std::string comparison = "") {
-    Measurement m{std::move(name), value, std::move(unit), threshold, std::move(comparison), true};
-    if (threshold) {
-      m.passed = m.comparison == "<=" ? value <= *threshold : m.comparison == ">=" ? value >= *threshold : value == *threshold;
-    }
-    return m;
-  };
-  const auto episodeOf = [&](int robot, int object, double from, double to) -> const HoldEpisode* {
-    for (const HoldEpisode& h : s.holds) {
-      if (h.robot == robot && h.object == object && h.grasp_time >= from - 1e-9 && h.grasp_time <= to + 1e-9) return &h;
-    }
-    return nullptr;
-  };
-  const auto insideRegion = [&](const core::Region& region, const Pose& X_WO, double& outside) {
-    outside = core::distanceOutside(region, X_WO.translation(), checks.placement_tolerance);
-    return outside <= 0.0;
-  };
-
-  // a place without a region: the object is set aside on a stable surface, to be picked up
-  // again; it must come to rest there, flat on a face
-  const auto judgeSetAside = [&](const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) {
-    const std::string& object = a.action->object;
-    if (!a.placement_sampled) {
-      failures.push_back("set aside: the run ended before the settle time after release");
-      return;
-    }
-    const double tilt = tiltFromFlat(a.placement_pose);
-    const std::optional<double> gap =
-        gapToSurface(s.world, a.placement_pose, s.world.objects[static_cast<std::size_t>(a.object)].size);
-    r.measurements.push_back(measure("speed_after_settle", a.placement_speed, "m/s", checks.rest_speed, "<="));
-    r.measurements.push_back(measure("tilt", tilt, "rad", checks.upright_tolerance, "<="));
-    r.measurements.push_back(measure("gap_to_surface", gap.value_or(std::numeric_limits<double>::infinity()), "m",
-                                     kSurfaceContact, "<="));
-    if (a.placement_speed > checks.rest_speed) {
-      failures.push_back("set aside: " + object + " still moving at " + fmt(a.placement_speed) + " m/s > " +
-                         fmt(checks.rest_speed) + " m/s");
-    }
-    if (tilt > checks.upright_tolerance) {
-      failures.push_back("set aside: " + object + " tilted " + fmt(tilt) + " rad > " + fmt(checks.upright_tolerance) + " rad");
-    }
-    if (!gap || *gap > kSurfaceContact) {
-      failures.push_back("set aside: " + object + (gap ? " rests " + fmt(*gap * 1e3) + " mm off" : " is over no") +
-                         " stable surface");
-    }
-    if (failures.empty()) r.observed_end = *a.placement_time;
-  };
-
   for (const ActionTrack& a : s.actions) {
     const core::PlanAction& action = *a.action;
     ActionReport r;
@@ -592,119 +801,16 @@ Report Monitor::finish(const PlanExecutor& executor) {
     r.planned_start = action.start;
     r.planned_end = action.end;
     std::vector<std::string> failures;
-    const std::string object = action.object;
-
     switch (action.type) {
-      case ActionType::kPick: {
-        if (!a.command_time) {
-          failures.push_back("grasp: the plan does not close " + action.robot + "'s gripper during the pick");
-          break;
-        }
-        r.measurements.push_back(measure("both_pads_contact", a.both_pads_time ? 1.0 : 0.0, "bool", 1.0, "=="));
-        if (!a.both_pads_time) {
-          failures.push_back("grasp: after closing at " + fmt(*a.command_time) + " s the pads of " + action.robot +
-                             " never both touched " + object);
-          break;
-        }
-        r.observed_start = *a.both_pads_time;
-        const HoldEpisode* hold = episodeOf(a.robot, a.object, *a.command_time, action.end);
-        r.measurements.push_back(measure("held_at_end", a.held_at_end ? 1.0 : 0.0, "bool", 1.0, "=="));
-        r.measurements.push_back(measure("support_contact_at_end", a.support_contact_at_end ? 1.0 : 0.0, "bool", 0.0, "=="));
-        r.measurements.push_back(measure("lift_height", a.lift_height, "m", checks.lift_clearance, ">="));
-        if (!a.held_at_end) failures.push_back("grasp: " + object + " not held by both pads at the end of the pick");
-        if (a.support_contact_at_end) failures.push_back("lift: " + object + " still touches its support at " + fmt(action.end) + " s");
-        if (a.lift_height < checks.lift_clearance) {
-          failures.push_back("lift: " + object + " raised " + fmt(a.lift_height * 1e3) + " mm < " +
-                             fmt(checks.lift_clearance * 1e3) + " mm");
-        }
-        if (hold != nullptr) {
-          // slip while lifting; later slip is judged by the action then in progress
-          const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
-          r.measurements.push_back(measure("slip", slip, "m", checks.slip_tolerance, "<="));
-          r.measurements.push_back(measure("slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
-          if (slip > checks.slip_tolerance) {
-            failures.push_back("slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
-          }
-          if (angle > checks.slip_angle_tolerance) {
-            failures.push_back("slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
-          }
-          if (a.held_at_end && !a.support_contact_at_end) r.observed_end = action.end;
-        }
+      case ActionType::kPick:
+        s.judgePick(a, r, failures);
         break;
-      }
-      case ActionType::kHandoff: {
-        if (!a.command_time || !a.command2_time || *a.command2_time <= *a.command_time) {
-          failures.push_back("handoff: the plan must close " + action.receiver + "'s gripper before opening " +
-                             action.robot + "'s during the handoff");
-          break;
-        }
-        r.measurements.push_back(measure("overlap", a.overlap, "s", kMinHandoffOverlap, ">="));
-        r.measurements.push_back(measure("receiver_holds_at_end", a.held_at_end ? 1.0 : 0.0, "bool", 1.0, "=="));
-        r.measurements.push_back(measure("giver_touches_at_end", a.giver_touching_at_end ? 1.0 : 0.0, "bool", 0.0, "=="));
-        r.measurements.push_back(measure("foreign_contacts", static_cast<double>(a.foreign_contacts.size()), "count", 0.0, "=="));
-        if (a.overlap < kMinHandoffOverlap) {
-          failures.push_back("overlap: both grippers held " + object + " together for " + fmt(a.overlap) + " s < " +
-                             fmt(kMinHandoffOverlap) + " s");
-        }
-        if (!a.held_at_end) failures.push_back("transfer: " + action.receiver + " does not hold " + object + " at the end");
-        if (a.giver_touching_at_end) failures.push_back("transfer: " + action.robot + " still touches " + object + " at the end");
-        for (const std::string& name : a.foreign_contacts) failures.push_back("handoff: " + object + " touched " + name);
-        const HoldEpisode* hold = episodeOf(a.receiver, a.object, action.start, action.end);
-        if (hold != nullptr) {
-          r.observed_start = hold->grasp_time;
-          const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
-          r.measurements.push_back(measure("receiver_slip", slip, "m", checks.slip_tolerance, "<="));
-          r.measurements.push_back(measure("receiver_slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
-          if (slip > checks.slip_tolerance) {
-            failures.push_back("receiver slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
-          }
-          if (angle > checks.slip_angle_tolerance) {
-            failures.push_back("receiver slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
-          }
-        }
-        if (a.held_at_end) r.observed_end = *a.command2_time;
+      case ActionType::kHandoff:
+        s.judgeHandoff(a, r, failures);
         break;
-      }
-      case ActionType::kPlace: {
-        if (!a.command_time) {
-          failures.push_back("placement: the plan does not open " + action.robot + "'s gripper during the place");
-          break;
-        }
-        r.observed_start = *a.command_time;
-        if (action.region.empty()) {  // set aside on a surface, to be picked up again
-          judgeSetAside(a, r, failures);
-          break;
-        }
-        if (a.region < 0) {
-          failures.push_back("placement: unknown region " + action.region);
-          break;
-        }
-        if (!a.placement_sampled) {
-          failures.push_back("placement: the run ended before the settle time after release");
-          break;
-        }
-        const core::Region& region = s.world.regions[a.region];
-        double outside = 0.0;
-        const bool inside = insideRegion(region, a.placement_pose, outside);
-        const double tilt = tiltFromFlat(a.placement_pose);
-        double final_outside = 0.0;
-        const bool stays = insideRegion(region, s.sim.objectPose(a.object), final_outside);
-        r.measurements.push_back(measure("distance_outside_region", outside, "m", 0.0, "<="));
-        r.measurements.push_back(measure("speed_after_settle", a.placement_speed, "m/s", checks.rest_speed, "<="));
-        r.measurements.push_back(measure("tilt", tilt, "rad", checks.upright_tolerance, "<="));
-        r.measurements.push_back(measure("distance_outside_region_at_end", final_outside, "m", 0.0, "<="));
-        if (!inside) failures.push_back("placement: " + object + " is " + fmt(outside * 1e3) + " mm outside " + region.name);
-        if (a.placement_speed > checks.rest_speed) {
-          failures.push_back("placement: " + object + " still moving at " + fmt(a.placement_speed) + " m/s > " +
-                             fmt(checks.rest_speed) + " m/s");
-        }
-        if (tilt > checks.upright_tolerance) {
-          failures.push_back("placement: " + object + " tilted " + fmt(tilt) + " rad > " + fmt(checks.upright_tolerance) + " rad");
-        }
-        if (inside && !stays) failures.push_back("placement: " + object + " left " + region.name + " before the end");
-        if (inside && a.placement_speed <= checks.rest_speed) r.observed_end = *a.placement_time;
+      case ActionType::kPlace:
+        s.judgePlace(a, r, failures);
         break;
-      }
     }
     // drops and slips attributed to this action fail it too
     for (const ExecutionEvent& event : s.events) {
@@ -717,35 +823,7 @@ Report Monitor::finish(const PlanExecutor& executor) {
     report.actions.push_back(std::move(r));
   }
 
-  // execution
-  std::vector<std::string> failures;
-  for (std::size_t r = 0; r < s.world.robots.size(); ++r) {
-    const TrackingStats& stats = executor.tracking(static_cast<int>(r));
-    RobotExecution execution;
-    execution.robot = s.world.robots[r].name;
-    execution.max_tracking_error = stats.max_tracking_error;
-    execution.torque_saturation = stats.steps > 0 ? static_cast<double>(stats.saturated_steps) / static_cast<double>(stats.steps) : 0.0;
-    execution.max_effort_ratio = stats.max_effort_ratio;
-    report.robots.push_back(execution);
-    if (stats.max_tracking_error > checks.tracking_error_limit) {
-      failures.push_back("tracking: " + execution.robot + " " + s.jointName(static_cast<int>(r), stats.max_error_joint) +
-                         " error " + fmt(stats.max_tracking_error) + " rad > " + fmt(checks.tracking_error_limit) +
-                         " rad at " + fmt(stats.max_error_time) + " s");
-    }
-  }
-  for (const ExecutionEvent& event : s.events) {
-    if (event.kind == "slip") continue;  // judged by the grasp and handoff checks
-    failures.push_back(event.kind + " at " + fmt(event.t) + " s: " + event.detail);
-  }
-  // the world's goals: every object sent to a region ends inside it, placed by the plan or not
-  for (std::size_t o = 0; o < s.world.objects.size(); ++o) {
-    const core::ObjectSpec& object = s.world.objects[o];
-    const core::Region* region = s.world.goalRegionOf(object);
-    double outside = 0.0;
-    if (region != nullptr && !insideRegion(*region, s.sim.objectPose(static_cast<int>(o)), outside)) {
-      failures.push_back("goal: " + object.name + " ends " + fmt(outside * 1e3) + " mm outside " + region->name);
-    }
-  }
+  const std::vector<std::string> failures = s.judgeExecution(executor, report);
   std::sort(s.events.begin(), s.events.end(), [](const ExecutionEvent& x, const ExecutionEvent& y) { return x.t < y.t; });
   report.events = s.events;
   report.execution_verdict = failures.empty() ? Verdict::kPassed : Verdict::kFailed;

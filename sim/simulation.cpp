@@ -209,64 +209,78 @@ struct Simulation::Impl {
     const btCollisionObjectArray& all = world.getCollisionObjectArray();
     for (int i = 0; i < all.size(); ++i) last_basis[all[i]->getUserIndex()] = all[i]->getWorldTransform().getBasis();
   }
+
+  void configureSolver(const core::PhysicsSettings& physics);
+  void addFloor(double friction);
+  void addFixtures(const std::vector<core::FixtureSpec>& fixtures, double friction);
+  void addObjects(const std::vector<core::ObjectSpec>& specs);
+  void addRobot(int r, const core::PlacedRobot& placed, double pad_friction, double time_step);
+  void addMultiBody(Robot& robot, const core::PlacedRobot& placed);
+  void addColliders(Robot& robot, int r, const core::RobotModel& model, double pad_friction);
+  /// Finger servos, and the gear that keeps the two fingers together.
+  void addFingerActuators(Robot& robot, const core::RobotModel& model, double time_step);
+
 };
 
-Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
-    : world_(world), robots_(robots), time_step_(world.physics.time_step), impl_(std::make_unique<Impl>()) {
-  Impl& s = *impl_;
-  s.world.setGravity(toBt(world.physics.gravity));
-  btContactSolverInfo& info = s.world.getSolverInfo();
-  info.m_numIterations = world.physics.solver_iterations;
+/// Gravity and the constraint solver's settings.
+void Simulation::Impl::configureSolver(const core::PhysicsSettings& physics) {
+  world.setGravity(toBt(physics.gravity));
+  btContactSolverInfo& info = world.getSolverInfo();
+  info.m_numIterations = physics.solver_iterations;
   // stop iterating once the contact impulses have converged (resting scenes converge fast)
   info.m_leastSquaresResidualThreshold = 1e-9;
   info.m_minimumSolverBatchSize = 1;
   // two friction directions per contact hold a grasped box against torsion about the
   // closing axis as well as against gravity
   info.m_solverMode |= SOLVER_USE_2_FRICTION_DIRECTIONS;
+}
 
-  // floor at z = 0: a large thin box rather than a plane, whose infinite bounds would pair it
-  // with every robot link in the broadphase
-  {
-    btCollisionShape* floor = s.own(boxShape(Eigen::Vector3d(20.0, 20.0, 0.1)));
-    auto body = std::make_unique<btRigidBody>(0.0, nullptr, floor);
-    body->setWorldTransform(btTransform(btMatrix3x3::getIdentity(), btVector3(0, 0, -0.05)));
-    body->setFriction(world.physics.fixture_friction);
-    body->setUserIndex(s.addRef({BodyRef::Kind::kFloor, -1, -1}));
-    s.world.addRigidBody(body.get(), kStaticBit, kAllBits ^ kStaticBit);
-    s.statics.push_back(std::move(body));
-  }
+/// The floor at z = 0: a large thin box rather than a plane, whose infinite bounds would pair it
+/// with every robot link in the broadphase.
+void Simulation::Impl::addFloor(double friction) {
+  btCollisionShape* floor = own(boxShape(Eigen::Vector3d(20.0, 20.0, 0.1)));
+  auto body = std::make_unique<btRigidBody>(0.0, nullptr, floor);
+  body->setWorldTransform(btTransform(btMatrix3x3::getIdentity(), btVector3(0, 0, -0.05)));
+  body->setFriction(friction);
+  body->setUserIndex(addRef({BodyRef::Kind::kFloor, -1, -1}));
+  world.addRigidBody(body.get(), kStaticBit, kAllBits ^ kStaticBit);
+  statics.push_back(std::move(body));
+}
 
-  // fixtures: static boxes (one box directly, several as a compound)
-  for (std::size_t f = 0; f < world.fixtures.size(); ++f) {
-    const core::FixtureSpec& fixture = world.fixtures[f];
+/// Fixtures: static boxes (one box directly, several as a compound).
+void Simulation::Impl::addFixtures(const std::vector<core::FixtureSpec>& fixtures, double friction) {
+  for (std::size_t f = 0; f < fixtures.size(); ++f) {
+    const core::FixtureSpec& fixture = fixtures[f];
     btCollisionShape* shape = nullptr;
     btTransform X_WS = btTransform::getIdentity();
     if (fixture.boxes.size() == 1) {
-      shape = s.own(boxShape(fixture.boxes[0].size));
+      shape = own(boxShape(fixture.boxes[0].size));
       X_WS = toBt(fixture.boxes[0].X_WB);
     } else {
-      auto* compound = static_cast<btCompoundShape*>(s.own(std::make_unique<btCompoundShape>()));
+      auto* compound = static_cast<btCompoundShape*>(own(std::make_unique<btCompoundShape>()));
       for (const core::Box& box : fixture.boxes) {
-        btCollisionShape* child = s.own(boxShape(box.size));
+        btCollisionShape* child = own(boxShape(box.size));
         compound->addChildShape(toBt(box.X_WB), child);
       }
       shape = compound;
     }
     auto body = std::make_unique<btRigidBody>(0.0, nullptr, shape);
     body->setWorldTransform(X_WS);
-    body->setFriction(world.physics.fixture_friction);
-    body->setUserIndex(s.addRef({BodyRef::Kind::kFixture, static_cast<int>(f), -1}));
-    s.world.addRigidBody(body.get(), kStaticBit, kAllBits ^ kStaticBit);
-    s.statics.push_back(std::move(body));
+    body->setFriction(friction);
+    body->setUserIndex(addRef({BodyRef::Kind::kFixture, static_cast<int>(f), -1}));
+    world.addRigidBody(body.get(), kStaticBit, kAllBits ^ kStaticBit);
+    statics.push_back(std::move(body));
   }
+}
 
-  // objects: dynamic boxes that never sleep
-  for (std::size_t o = 0; o < world.objects.size(); ++o) {
-    const core::ObjectSpec& spec = world.objects[o];
-    btCollisionShape* box = s.own(boxShape(spec.size));
+/// Objects: dynamic boxes that never sleep.
+void Simulation::Impl::addObjects(const std::vector<core::ObjectSpec>& specs) {
+  for (std::size_t o = 0; o < specs.size(); ++o) {
+    const core::ObjectSpec& spec = specs[o];
+    btCollisionShape* box = own(boxShape(spec.size));
     btVector3 inertia;
     box->calculateLocalInertia(spec.mass, inertia);
-    Impl::Object object;
+    Object object;
     object.motion_state = std::make_unique<btDefaultMotionState>(toBt(spec.X_WO));
     btRigidBody::btRigidBodyConstructionInfo ci(spec.mass, object.motion_state.get(), box, inertia);
     ci.m_friction = spec.friction;
@@ -275,134 +289,159 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
     object.body->setActivationState(DISABLE_DEACTIVATION);
     // friction anchors keep a static-friction contact from creeping between steps
     object.body->setCollisionFlags(object.body->getCollisionFlags() | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
-    object.body->setUserIndex(s.addRef({BodyRef::Kind::kObject, static_cast<int>(o), -1}));
-    s.world.addRigidBody(object.body.get(), kObjectBit, kAllBits);
-    s.objects.push_back(std::move(object));
+    object.body->setUserIndex(addRef({BodyRef::Kind::kObject, static_cast<int>(o), -1}));
+    world.addRigidBody(object.body.get(), kObjectBit, kAllBits);
+    objects.push_back(std::move(object));
   }
+}
 
-  // robots
+/// Robot r: its links grouped into rigid bodies, a fixed-base multibody, a collider per body,
+/// and the finger servos and gear.
+void Simulation::Impl::addRobot(int r, const core::PlacedRobot& placed, double pad_friction, double time_step) {
+  const core::RobotModel& model = *placed.model;
+  Robot robot;
+  // group links into bodies: the root and each movable joint's child head a body
+  robot.link_to_body.assign(model.links().size(), -1);
+  robot.bodies.emplace_back().head_link = 0;
+  robot.q_to_mb_link.assign(model.numPositions(), -1);
+  for (std::size_t l = 0; l < model.links().size(); ++l) {
+    const int j = model.links()[l].parent_joint;
+    if (j < 0) {
+      robot.link_to_body[l] = 0;
+    } else if (model.joints()[j].type == core::JointType::kFixed) {
+      robot.link_to_body[l] = robot.link_to_body[model.joints()[j].parent_link];
+    } else {
+      robot.q_to_mb_link[model.joints()[j].q_index] = static_cast<int>(robot.bodies.size()) - 1;
+      robot.link_to_body[l] = static_cast<int>(robot.bodies.size());
+      robot.bodies.emplace_back().head_link = static_cast<int>(l);
+    }
+    robot.bodies[robot.link_to_body[l]].links.push_back(static_cast<int>(l));
+  }
+  for (MergedBody& body : robot.bodies) computeInertia(model, body);
+  addMultiBody(robot, placed);
+  addColliders(robot, r, model, pad_friction);
+  addFingerActuators(robot, model, time_step);
+  robots.push_back(std::move(robot));
+}
+
+/// The multibody of a robot whose links are grouped into `robot.bodies`: one Bullet link per
+/// movable joint, at the placed base.
+void Simulation::Impl::addMultiBody(Robot& robot, const core::PlacedRobot& placed) {
+  const core::RobotModel& model = *placed.model;
+  const int num_links = static_cast<int>(robot.bodies.size()) - 1;
+  const MergedBody& base = robot.bodies[0];
+  robot.body = std::make_unique<btMultiBody>(num_links, base.mass, toBt(base.inertia_diag), /*fixedBase=*/true,
+                                             /*canSleep=*/false);
+  robot.body->setBaseWorldTransform(toBt(placed.spec->X_WBase * base.X_HB));
+  for (int k = 0; k < num_links; ++k) {
+    const MergedBody& child = robot.bodies[k + 1];
+    const int joint_index = model.links()[child.head_link].parent_joint;
+    const core::JointModel& joint = model.joints()[joint_index];
+    const int parent_body = robot.link_to_body[joint.parent_link];
+    const MergedBody& parent = robot.bodies[parent_body];
+    // joint frame in the parent's and in the child's Bullet body frame (at q = 0 the joint
+    // frame is the child link frame)
+    const Pose X_BpJ = parent.X_HB.inverse() * model.fixedTransform(parent.head_link, joint.parent_link) * joint.X_PJ;
+    const Pose X_BcJ = child.X_HB.inverse();
+    const btQuaternion rot_parent_to_this =
+        toBt(X_BcJ).getRotation() * toBt(X_BpJ).getRotation().inverse();
+    const btVector3 axis = toBt(Eigen::Vector3d(X_BcJ.linear() * joint.axis));
+    const btVector3 pivot_in_parent = toBt(X_BpJ.translation());
+    const btVector3 pivot_to_com = toBt(Eigen::Vector3d(-X_BcJ.translation()));
+    if (joint.type == core::JointType::kRevolute) {
+      robot.body->setupRevolute(k, child.mass, toBt(child.inertia_diag), parent_body - 1, rot_parent_to_this, axis,
+                                pivot_in_parent, pivot_to_com, true);
+    } else {
+      robot.body->setupPrismatic(k, child.mass, toBt(child.inertia_diag), parent_body - 1, rot_parent_to_this, axis,
+                                 pivot_in_parent, pivot_to_com, true);
+    }
+    // no artificial damping or friction in the joints (UR's ROS 2 description has none)
+    robot.body->getLink(k).m_jointDamping = 0.0;
+    robot.body->getLink(k).m_jointFriction = 0.0;
+  }
+  robot.body->finalizeMultiDof();
+  robot.body->setLinearDamping(0.0);
+  robot.body->setAngularDamping(0.0);
+  robot.body->setUseGyroTerm(true);
+  robot.body->setHasSelfCollision(false);
+  world.addMultiBody(robot.body.get());
+}
+
+/// Colliders: one compound per body, the pads' bodies with the pad friction.
+void Simulation::Impl::addColliders(Robot& robot, int r, const core::RobotModel& model, double pad_friction) {
+  // colliders: one compound per body
+  for (std::size_t b = 0; b < robot.bodies.size(); ++b) {
+    const MergedBody& body = robot.bodies[b];
+    auto* compound = static_cast<btCompoundShape*>(own(std::make_unique<btCompoundShape>()));
+    bool finger = false;
+    for (int l : body.links) {
+      for (const core::CollisionShape& cs : model.links()[l].collisions) {
+        finger = finger || cs.name == "pad";
+        const Pose X_BS = body.X_HB.inverse() * model.fixedTransform(body.head_link, l) * cs.X_LS;
+        compound->addChildShape(toBt(X_BS), own(makeShape(cs)));
+      }
+    }
+    if (compound->getNumChildShapes() == 0) continue;
+    const int mb_link = static_cast<int>(b) - 1;
+    auto collider = std::make_unique<btMultiBodyLinkCollider>(robot.body.get(), mb_link);
+    collider->setCollisionShape(compound);
+    // finger bodies carry the rubber pads: their friction is the pad friction
+    collider->setFriction(finger ? pad_friction : 0.5);
+    if (finger) collider->setCollisionFlags(collider->getCollisionFlags() | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
+    collider->setUserIndex(addRef({BodyRef::Kind::kRobot, r, body.head_link}));
+    // the base stands on its table: it is fixed, so its contacts with the scenery mean nothing
+    const int mask = (mb_link < 0 ? (kAllBits ^ kStaticBit) : kAllBits) ^ robotBit(r);
+    world.addCollisionObject(collider.get(), robotBit(r), mask);
+    if (mb_link < 0) {
+      robot.body->setBaseCollider(collider.get());
+    } else {
+      robot.body->getLink(mb_link).m_collider = collider.get();
+    }
+    robot.colliders.push_back(std::move(collider));
+  }
+}
+
+void Simulation::Impl::addFingerActuators(Robot& robot, const core::RobotModel& model, double time_step) {
+  // The joints get no limit constraints: the Hand-E controller stops the
+  // fingers at the ends of their stroke, plans are validated against the arm limits before
+  // they run and the tracking check reports deviations — and every constraint row costs an
+  // articulated-body solve in each solver iteration.
+  for (int qi = 0; qi < model.numPositions(); ++qi) {
+    const core::JointModel& joint = model.joints()[model.movableJoints()[qi]];
+    if (joint.type != core::JointType::kPrismatic) continue;
+    const int mb_link = robot.q_to_mb_link[qi];
+    auto motor = std::make_unique<btMultiBodyJointMotor>(robot.body.get(), mb_link, 0.0, 0.0);
+    world.addMultiBodyConstraint(motor.get());
+    robot.finger_motors.push_back(std::move(motor));
+    robot.finger_links.push_back(mb_link);
+  }
+  // the Hand-E's fingers are driven by one actuator through a rack, so they always move
+  // together: a gear constraint keeps the two finger joints equal (it transmits force
+  // between the fingers only, it touches no object)
+  if (robot.finger_links.size() == 2) {
+    auto gear = std::make_unique<btMultiBodyGearConstraint>(
+        robot.body.get(), robot.finger_links[0], robot.body.get(), robot.finger_links[1], btVector3(0, 0, 0),
+        btVector3(0, 0, 0), btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
+    gear->setGearRatio(kFingerGearRatio);
+    gear->setErp(kFingerGearErp);
+    gear->setMaxAppliedImpulse(2.0 * controllers::kHandeMaxForce * time_step);
+    world.addMultiBodyConstraint(gear.get());
+    robot.gear = std::move(gear);
+  }
+}
+
+Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
+    : world_(world), robots_(robots), time_step_(world.physics.time_step), impl_(std::make_unique<Impl>()) {
+  Impl& s = *impl_;
+  s.configureSolver(world.physics);
+  s.addFloor(world.physics.fixture_friction);
+  s.addFixtures(world.fixtures, world.physics.fixture_friction);
+  s.addObjects(world.objects);
   for (std::size_t r = 0; r < robots.size(); ++r) {
-    const core::PlacedRobot& placed = robots[r];
-    const core::RobotModel& model = *placed.model;
-    Impl::Robot robot;
-    // group links into bodies: the root and each movable joint's child head a body
-    robot.link_to_body.assign(model.links().size(), -1);
-    robot.bodies.emplace_back().head_link = 0;
-    robot.q_to_mb_link.assign(model.numPositions(), -1);
-    for (std::size_t l = 0; l < model.links().size(); ++l) {
-      const int j = model.links()[l].parent_joint;
-      if (j < 0) {
-        robot.link_to_body[l] = 0;
-      } else if (model.joints()[j].type == core::JointType::kFixed) {
-        robot.link_to_body[l] = robot.link_to_body[model.joints()[j].parent_link];
-      } else {
-        robot.q_to_mb_link[model.joints()[j].q_index] = static_cast<int>(robot.bodies.size()) - 1;
-        robot.link_to_body[l] = static_cast<int>(robot.bodies.size());
-        robot.bodies.emplace_back().head_link = static_cast<int>(l);
-      }
-      robot.bodies[robot.link_to_body[l]].links.push_back(static_cast<int>(l));
-    }
-    for (MergedBody& body : robot.bodies) computeInertia(model, body);
-
-    const int num_links = static_cast<int>(robot.bodies.size()) - 1;
-    const MergedBody& base = robot.bodies[0];
-    robot.body = std::make_unique<btMultiBody>(num_links, base.mass, toBt(base.inertia_diag), /*fixedBase=*/true,
-                                               /*canSleep=*/false);
-    robot.body->setBaseWorldTransform(toBt(placed.spec->X_WBase * base.X_HB));
-    for (int k = 0; k < num_links; ++k) {
-      const MergedBody& child = robot.bodies[k + 1];
-      const int joint_index = model.links()[child.head_link].parent_joint;
-      const core::JointModel& joint = model.joints()[joint_index];
-      const int parent_body = robot.link_to_body[joint.parent_link];
-      const MergedBody& parent = robot.bodies[parent_body];
-      // joint frame in the parent's and in the child's Bullet body frame (at q = 0 the joint
-      // frame is the child link frame)
-      const Pose X_BpJ = parent.X_HB.inverse() * model.fixedTransform(parent.head_link, joint.parent_link) * joint.X_PJ;
-      const Pose X_BcJ = child.X_HB.inverse();
-      const btQuaternion rot_parent_to_this =
-          toBt(X_BcJ).getRotation() * toBt(X_BpJ).getRotation().inverse();
-      const btVector3 axis = toBt(Eigen::Vector3d(X_BcJ.linear() * joint.axis));
-      const btVector3 pivot_in_parent = toBt(X_BpJ.translation());
-      const btVector3 pivot_to_com = toBt(Eigen::Vector3d(-X_BcJ.translation()));
-      if (joint.type == core::JointType::kRevolute) {
-        robot.body->setupRevolute(k, child.mass, toBt(child.inertia_diag), parent_body - 1, rot_parent_to_this, axis,
-                                  pivot_in_parent, pivot_to_com, true);
-      } else {
-        robot.body->setupPrismatic(k, child.mass, toBt(child.inertia_diag), parent_body - 1, rot_parent_to_this, axis,
-                                   pivot_in_parent, pivot_to_com, true);
-      }
-      // no artificial damping or friction in the joints (UR's ROS 2 description has none)
-      robot.body->getLink(k).m_jointDamping = 0.0;
-      robot.body->getLink(k).m_jointFriction = 0.0;
-    }
-    robot.body->finalizeMultiDof();
-    robot.body->setLinearDamping(0.0);
-    robot.body->setAngularDamping(0.0);
-    robot.body->setUseGyroTerm(true);
-    robot.body->setHasSelfCollision(false);
-    s.world.addMultiBody(robot.body.get());
-
-    // colliders: one compound per body
-    for (std::size_t b = 0; b < robot.bodies.size(); ++b) {
-      const MergedBody& body = robot.bodies[b];
-      auto* compound = static_cast<btCompoundShape*>(s.own(std::make_unique<btCompoundShape>()));
-      bool finger = false;
-      for (int l : body.links) {
-        for (const core::CollisionShape& cs : model.links()[l].collisions) {
-          finger = finger || cs.name == "pad";
-          const Pose X_BS = body.X_HB.inverse() * model.fixedTransform(body.head_link, l) * cs.X_LS;
-          compound->addChildShape(toBt(X_BS), s.own(makeShape(cs)));
-        }
-      }
-      if (compound->getNumChildShapes() == 0) continue;
-      const int mb_link = static_cast<int>(b) - 1;
-      auto collider = std::make_unique<btMultiBodyLinkCollider>(robot.body.get(), mb_link);
-      collider->setCollisionShape(compound);
-      // finger bodies carry the rubber pads: their friction is the pad friction
-      collider->setFriction(finger ? world.physics.pad_friction : 0.5);
-      if (finger) collider->setCollisionFlags(collider->getCollisionFlags() | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
-      collider->setUserIndex(s.addRef({BodyRef::Kind::kRobot, static_cast<int>(r), body.head_link}));
-      // the base stands on its table: it is fixed, so its contacts with the scenery mean nothing
-      const int mask = (mb_link < 0 ? (kAllBits ^ kStaticBit) : kAllBits) ^ robotBit(static_cast<int>(r));
-      s.world.addCollisionObject(collider.get(), robotBit(static_cast<int>(r)), mask);
-      if (mb_link < 0) {
-        robot.body->setBaseCollider(collider.get());
-      } else {
-        robot.body->getLink(mb_link).m_collider = collider.get();
-      }
-      robot.colliders.push_back(std::move(collider));
-    }
-
-    // finger servos. The joints get no limit constraints: the Hand-E controller stops the
-    // fingers at the ends of their stroke, plans are validated against the arm limits before
-    // they run and the tracking check reports deviations — and every constraint row costs an
-    // articulated-body solve in each solver iteration.
-    for (int qi = 0; qi < model.numPositions(); ++qi) {
-      const core::JointModel& joint = model.joints()[model.movableJoints()[qi]];
-      if (joint.type != core::JointType::kPrismatic) continue;
-      const int mb_link = robot.q_to_mb_link[qi];
-      auto motor = std::make_unique<btMultiBodyJointMotor>(robot.body.get(), mb_link, 0.0, 0.0);
-      s.world.addMultiBodyConstraint(motor.get());
-      robot.finger_motors.push_back(std::move(motor));
-      robot.finger_links.push_back(mb_link);
-    }
-    // the Hand-E's fingers are driven by one actuator through a rack, so they always move
-    // together: a gear constraint keeps the two finger joints equal (it transmits force
-    // between the fingers only, it touches no object)
-    if (robot.finger_links.size() == 2) {
-      auto gear = std::make_unique<btMultiBodyGearConstraint>(
-          robot.body.get(), robot.finger_links[0], robot.body.get(), robot.finger_links[1], btVector3(0, 0, 0),
-          btVector3(0, 0, 0), btMatrix3x3::getIdentity(), btMatrix3x3::getIdentity());
-      gear->setGearRatio(kFingerGearRatio);
-      gear->setErp(kFingerGearErp);
-      gear->setMaxAppliedImpulse(2.0 * controllers::kHandeMaxForce * time_step_);
-      s.world.addMultiBodyConstraint(gear.get());
-      robot.gear = std::move(gear);
-    }
-    s.robots.push_back(std::move(robot));
-
+    s.addRobot(static_cast<int>(r), robots[r], world.physics.pad_friction, time_step_);
+    const core::RobotModel& model = *robots[r].model;
     Eigen::VectorXd q = Eigen::VectorXd::Zero(model.numPositions());
-    for (int i = 0; i < 6; ++i) q[i] = placed.spec->home[i];
+    for (int i = 0; i < 6; ++i) q[i] = robots[r].spec->home[i];
     for (int i = 6; i < model.numPositions(); ++i) q[i] = model.joints()[model.movableJoints()[i]].upper;
     setJointPositions(static_cast<int>(r), q);
     setFingerServo(static_cast<int>(r), {0.0, 0.0});

@@ -300,71 +300,150 @@ std::vector<double> firstDifferences(const Schedule& a, const Schedule& b, int r
   return result;
 }
 
-}  // namespace
+/// A node of the high level: the precedences, detours and parkings added on the way to it and
+/// the schedule they give.
+struct Node {
+  std::vector<Precedence> extra;
+  std::vector<DetourConstraint> detours;
+  int parkings = 0;
+  bool folded = false;  ///< a robot was folded out of the way on the way here
+  Schedule schedule;
+  std::uint64_t order = 0;
+  double clear_until = 0.0;  ///< [s] no conflict before this time
+  double resolves = 0.0;     ///< [s] when the conflict it was made to resolve (its parent's first) happens
+  std::optional<PairKnowledge> known;  ///< per robot pair, intervals known free
+  std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
+};
 
-ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
-                                const ConflictResolutionBudget& budget, SequentialSteps steps) {
-  ConflictResult result;
-  const std::vector<ScheduleSegment> base = segmentsOf(graph, history);
-  CollisionChecker checker(graph.scene());
-  const int robots = static_cast<int>(graph.world().world->robots.size());
+using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
 
-  struct Node {
-    std::vector<Precedence> extra;
-    std::vector<DetourConstraint> detours;
-    int parkings = 0;
-    bool folded = false;  ///< a robot was folded out of the way on the way here
-    Schedule schedule;
-    std::uint64_t order = 0;
-    double clear_until = 0.0;  ///< [s] no conflict before this time
-    double resolves = 0.0;     ///< [s] when the conflict it was made to resolve (its parent's first) happens
-    std::optional<PairKnowledge> known;  ///< per robot pair, intervals known free
-    std::size_t constraints() const { return extra.size() + detours.size() + static_cast<std::size_t>(parkings); }
+/// A reroute already tried, by kind (detour or parking), move and states to keep clear of (in
+/// any order): the same conflict comes back in many nodes, and asked again a reroute takes the
+/// answer found before (a new search could differ only where the roadmap grew meanwhile). Only
+/// new ones count against max_reroutes: the nodes below a folded robot's and the others each
+/// have that many, so that the search behind a fold does not use up those of a way without one.
+struct Reroute {
+  bool parking = false;
+  const Move* move = nullptr;
+  std::vector<Obstacle> avoid;
+  std::optional<MoveParts> parts;
+  bool folded = false;  ///< asked for below a fold
+};
+
+/// Scheduled CBS on one task plan (paper: Method > Conflict Resolution). The high level
+/// branches on the first robot-robot conflict of a node's schedule: in time, one item before
+/// the other (ordering); where no order holds, in space, a detour or a parking planned on the
+/// roadmaps (the low level). Conflicts no order resolves are fed back as scheduling constraints.
+class ConflictSearch {
+ public:
+  ConflictSearch(MotionHypergraph& graph, const TransitionHistory& history, const ConflictResolutionBudget& budget,
+                 SequentialSteps steps)
+      : graph_(graph),
+        history_(history),
+        budget_(budget),
+        steps_(steps),
+        checker_(graph.scene()),
+        robots_(static_cast<int>(graph.world().world->robots.size())) {}
+
+  ConflictResult run() {
+    if (!pushRoot()) return result_;
+    while (!open_.empty()) {
+      if (result_.nodes >= budget_.max_nodes || (budget_.stop && budget_.stop())) {
+        result_.status = ConflictStatus::kBudget;
+        return result_;
+      }
+      Node node = takeNext();
+      ++result_.nodes;
+      const ScheduleView view(graph_, node.schedule);
+      std::vector<double> checked;
+      const std::optional<RobotConflict> conflict = firstConflictPairs(
+          graph_, view, node.schedule, node.clear_until, node.known ? &*node.known : nullptr, &checked);
+      if (!conflict) {
+        result_.status = ConflictStatus::kResolved;
+        result_.constraints = static_cast<int>(node.constraints());
+        result_.schedule = std::move(node.schedule);
+        return result_;
+      }
+      result_.reason = describe(graph_, history_, view, node.schedule, *conflict);
+      const Expansion expansion{node, view, *conflict, checked};
+      if (orderChildren(expansion)) continue;
+      feedBackUnordered(expansion);
+      rerouteChildren(expansion);
+    }
+    result_.status = ConflictStatus::kUnresolvable;
+    return result_;
+  }
+
+ private:
+  /// The node being expanded and its first conflict.
+  struct Expansion {
+    const Node& node;
+    const ScheduleView& view;
+    const RobotConflict& conflict;
+    const std::vector<double>& checked;  ///< per robot pair, checked free up to (firstConflictPairs)
   };
-  // which open node comes next: along time, the one free of conflicts for longest (ties: the
-  // shortest); by makespan the same, among those at most focal_weight times the shortest; depth
-  // first, the one made to resolve the latest conflict, so that the children of the node that
-  // got furthest come first (ties as along time)
-  const bool depth_first = budget.order == NodeOrder::kDepthFirst;
-  const auto deeper = [depth_first](const Node& x, const Node& y) {
+
+  /// The root: the history's own schedule. False (with the reason) when its precedences
+  /// contradict each other or it is not below makespan_below.
+  bool pushRoot() {
+    std::optional<Node> root = make(segmentsOf(graph_, history_), {}, {}, 0, false);
+    if (!root) {
+      result_.reason = "the schedule's own precedences contradict each other";
+      return false;
+    }
+    result_.unresolved_makespan = root->schedule.makespan;
+    if (budget_.makespan_below && root->schedule.makespan >= *budget_.makespan_below) {
+      result_.reason = "no schedule is shorter than " + std::to_string(*budget_.makespan_below) + " ms";
+      return false;
+    }
+    open_.push_back(std::move(*root));
+    return true;
+  }
+
+  /// Which open node comes next: along time, the one free of conflicts for longest (ties: the
+  /// shortest); by makespan the same, among those at most focal_weight times the shortest; depth
+  /// first, the one made to resolve the latest conflict, so that the children of the node that
+  /// got furthest come first (ties as along time).
+  bool deeper(const Node& x, const Node& y) const {
+    const bool depth_first = budget_.order == NodeOrder::kDepthFirst;
     const auto key = [&](const Node& n) {
       return std::make_tuple(depth_first ? -n.resolves : 0.0, -n.clear_until, n.schedule.makespan, n.constraints(),
                              n.order);
     };
     return key(x) < key(y);
-  };
-  std::vector<Node> open;
-  const auto take_next = [&]() {
+  }
+
+  Node takeNext() {
     // the shortest always qualifies, whatever the weight
     std::size_t next = 0;
     double bound = std::numeric_limits<double>::infinity();
-    if (budget.order == NodeOrder::kMakespan) {
-      next = static_cast<std::size_t>(std::min_element(open.begin(), open.end(), [](const Node& x, const Node& y) {
+    if (budget_.order == NodeOrder::kMakespan) {
+      next = static_cast<std::size_t>(std::min_element(open_.begin(), open_.end(), [](const Node& x, const Node& y) {
                                         return x.schedule.makespan < y.schedule.makespan;
                                       }) -
-                                      open.begin());
-      bound = budget.focal_weight * static_cast<double>(open[next].schedule.makespan);
+                                      open_.begin());
+      bound = budget_.focal_weight * static_cast<double>(open_[next].schedule.makespan);
     }
-    for (std::size_t i = 0; i < open.size(); ++i) {
-      if (static_cast<double>(open[i].schedule.makespan) <= bound && deeper(open[i], open[next])) next = i;
+    for (std::size_t i = 0; i < open_.size(); ++i) {
+      if (static_cast<double>(open_[i].schedule.makespan) <= bound && deeper(open_[i], open_[next])) next = i;
     }
-    Node node = std::move(open[next]);
-    if (next + 1 != open.size()) open[next] = std::move(open.back());
-    open.pop_back();
+    Node node = std::move(open_[next]);
+    if (next + 1 != open_.size()) open_[next] = std::move(open_.back());
+    open_.pop_back();
     return node;
-  };
-  std::uint64_t created = 0;
-  // a node: its segments at the earliest times their temporal network allows. Where they
-  // cannot all hold and `arrive_early` is given, a move into a transition on the contradiction
-  // (a cycle of precedences) that arrives just in time may arrive early and wait in front of the
-  // transition instead (its segment is added to `arrive_early`): that robot cannot both wait
-  // where it was and be out of the way in time.
-  const auto make = [&](std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
-                        std::vector<DetourConstraint> detours, int parkings, bool folded,
-                        std::vector<int>* arrive_early = nullptr) -> std::optional<Node> {
+  }
+
+  /// A node: its segments at the earliest times their temporal network allows. Where they
+  /// cannot all hold and `arrive_early` is given, a move into a transition on the contradiction
+  /// (a cycle of precedences) that arrives just in time may arrive early and wait in front of the
+  /// transition instead (its segment is added to `arrive_early`): that robot cannot both wait
+  /// where it was and be out of the way in time.
+  std::optional<Node> make(std::vector<ScheduleSegment> segments, std::vector<Precedence> extra,
+                           std::vector<DetourConstraint> detours, int parkings, bool folded,
+                           std::vector<int>* arrive_early = nullptr) {
     std::optional<std::vector<Millis>> start;
     for (std::vector<std::size_t> cycle;;) {
-      std::vector<TemporalEdge> edges = baseConstraints(graph, history, segments, steps);
+      std::vector<TemporalEdge> edges = baseConstraints(graph_, history_, segments, steps_);
       for (const Precedence& p : extra) edges.push_back(edgeOf(p, segments));
       start = earliestStarts(segments.size(), edges, arrive_early != nullptr ? &cycle : nullptr);
       if (start) break;
@@ -382,37 +461,133 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     schedule.segments = std::move(segments);
     schedule.start = std::move(*start);
     schedule.makespan = makespanOf(schedule);
-    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created++, 0.0, 0.0,
+    return Node{std::move(extra), std::move(detours), parkings, folded, std::move(schedule), created_++, 0.0, 0.0,
                 std::nullopt};
-  };
-  // Reroutes already tried, by kind (detour or parking), move and states to keep clear of (in
-  // any order): the same conflict comes back in many nodes, and asked again a reroute takes the
-  // answer found before (a new search could differ only where the roadmap grew meanwhile). Only
-  // new ones count against max_reroutes: the nodes below a folded robot's and the others each
-  // have that many, so that the search behind a fold does not use up those of a way without one.
-  using MoveParts = std::pair<const Move*, const Move*>;  // a detour: the first only
-  struct Reroute {
-    bool parking = false;
-    const Move* move = nullptr;
-    std::vector<Obstacle> avoid;
-    std::optional<MoveParts> parts;
-    bool folded = false;  ///< asked for below a fold
-  };
-  std::vector<Reroute> tried;
-  const auto reroute = [&](const Node& node, bool parking, const Move& move, const std::vector<Obstacle>& avoid,
-                           const std::function<std::optional<MoveParts>()>& plan) -> std::optional<MoveParts> {
-    const auto known = std::find_if(tried.begin(), tried.end(), [&](const Reroute& r) {
+  }
+
+  /// Opens `child` of the expanded node unless it is not below makespan_below: it repeats the
+  /// parent's schedule, free before the conflict, until their first difference.
+  bool push(const Expansion& x, Node child) {
+    if (budget_.makespan_below && child.schedule.makespan >= *budget_.makespan_below) return false;
+    const std::vector<double> differ = firstDifferences(x.node.schedule, child.schedule, robots_);
+    child.clear_until = std::min(x.conflict.t, *std::min_element(differ.begin(), differ.end()));
+    child.resolves = x.conflict.t;
+    // per robot pair: what this node found free, as long as both robots do the same
+    PairKnowledge known{x.checked, std::vector<double>(x.checked.size(), 0.0)};
+    for (int a = 0; a < robots_; ++a) {
+      for (int b = a + 1; b < robots_; ++b) known.same[a * robots_ + b] = std::min(differ[a], differ[b]);
+    }
+    child.known = std::move(known);
+    open_.push_back(std::move(child));
+    return true;
+  }
+
+  /// Time: A before B, B before A. A's move into a transition arriving early, where A cannot
+  /// end before B starts just in time (both robots going into one handoff), orders them; true
+  /// when such a child was opened, and the conflict needs nothing more. Otherwise the children
+  /// where another robot arrives early to make room are opened, one more way beside the
+  /// reroutes; an order whose schedule is not below the bound leaves the conflict to a reroute.
+  bool orderChildren(const Expansion& x) {
+    const Node& node = x.node;
+    const int ra = x.conflict.robot_a, rb = x.conflict.robot_b;
+    bool ordered = false;
+    std::vector<Node> making_room;
+    for (const bool a_first : {true, false}) {
+      const std::optional<Precedence> p = a_first ? precedence(x.view, ra, x.conflict.item_a, rb, x.conflict.item_b)
+                                                  : precedence(x.view, rb, x.conflict.item_b, ra, x.conflict.item_a);
+      if (!p || std::find(node.extra.begin(), node.extra.end(), *p) != node.extra.end()) continue;
+      std::vector<Precedence> extra = node.extra;
+      extra.push_back(*p);
+      std::vector<int> early;
+      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings, node.folded, &early);
+      const bool a_early = std::all_of(early.begin(), early.end(), [&](int s) { return p->from_end && s == p->from; });
+      if (child && !a_early) making_room.push_back(std::move(*child));
+      if (child && a_early && push(x, std::move(*child))) ordered = true;
+    }
+    if (ordered) return true;
+    for (Node& child : making_room) push(x, std::move(child));
+    return false;
+  }
+
+  /// Scheduling constraints (paper: Transition-extended Hypergraph > Scheduling Constraints): the
+  /// two transitions of a conflict no order resolves, and a transition meeting a robot that
+  /// stands at home.
+  void feedBackUnordered(const Expansion& x) {
+    const RobotConflict& conflict = x.conflict;
+    const int ta = transitionOf(history_, x.node.schedule, x.view.timeline(conflict.robot_a), conflict.item_a);
+    const int tb = transitionOf(history_, x.node.schedule, x.view.timeline(conflict.robot_b), conflict.item_b);
+    if (ta >= 0 && tb >= 0 && ta != tb) {
+      const std::pair<int, int> pair = std::minmax(ta, tb);
+      if (std::find(result_.unordered.begin(), result_.unordered.end(), pair) == result_.unordered.end()) {
+        result_.unordered.push_back(pair);
+      }
+    }
+    // standing at home before its first segment (item -1) — in a sequential history, standing
+    // at home at all: the other's transition meets home
+    const auto at_home = [&](int robot, int item) {
+      return item == -1 || (history_.sequential && item < 0 &&
+                            x.view.at(robot, conflict.t, false).q == graph_.world().world->robots[robot].home);
+    };
+    for (const auto& [transition, item, robot] :
+         {std::tuple{ta, conflict.item_b, conflict.robot_b}, std::tuple{tb, conflict.item_a, conflict.robot_a}}) {
+      const std::pair<int, int> blocked{transition, robot};
+      if (transition >= 0 && at_home(robot, item) &&
+          std::find(result_.home_blocked.begin(), result_.home_blocked.end(), blocked) == result_.home_blocked.end()) {
+        result_.home_blocked.push_back(blocked);
+      }
+    }
+  }
+
+  /// Space, when time cannot help: a robot on a move takes a detour around where the other one
+  /// is meanwhile; a robot standing before a move waits somewhere out of the other one's way.
+  void rerouteChildren(const Expansion& x) {
+    const Node& node = x.node;
+    const RobotConflict& conflict = x.conflict;
+    const std::vector<ScheduleSegment>& segments = node.schedule.segments;
+    for (const auto& [robot, item, other, other_item] :
+         {std::tuple{conflict.robot_a, conflict.item_a, conflict.robot_b, conflict.item_b},
+          std::tuple{conflict.robot_b, conflict.item_b, conflict.robot_a, conflict.item_a}}) {
+      const Timeline& line = x.view.timeline(robot);
+      if (item >= 0) {
+        const int segment = line.segments[item];
+        if (segments[segment].move == nullptr) continue;
+        if (std::optional<Node> child = detoured(node, segment, obstaclesDuring(x.view, node.schedule, segment, other))) {
+          push(x, std::move(*child));
+        }
+      } else if (const int k = -1 - item; k < static_cast<int>(line.segments.size()) && other_item >= 0) {
+        const int segment = line.segments[k];
+        if (segments[segment].move == nullptr) continue;
+        // standing no time at all: the conflict is where the segment before ends, no parking helps
+        if (k > 0) {
+          const int before = line.segments[k - 1];
+          if (node.schedule.start[before] + segments[before].duration >= node.schedule.start[segment]) continue;
+        }
+        const int busy = x.view.timeline(other).segments[other_item];
+        const std::vector<Obstacle> avoid = obstaclesDuring(x.view, node.schedule, busy, other);
+        for (const bool fold : {false, true}) {
+          if (std::optional<Node> child = parked(node, segment, avoid, fold)) push(x, std::move(*child));
+        }
+      }
+    }
+  }
+
+  /// A reroute (Reroute) planned by `plan` unless asked before or the budget of its side of the
+  /// folds is used up.
+  std::optional<MoveParts> reroute(const Node& node, bool parking, const Move& move, const std::vector<Obstacle>& avoid,
+                                   const std::function<std::optional<MoveParts>()>& plan) {
+    const auto known = std::find_if(tried_.begin(), tried_.end(), [&](const Reroute& r) {
       return r.parking == parking && r.move == &move && r.avoid.size() == avoid.size() &&
              std::is_permutation(avoid.begin(), avoid.end(), r.avoid.begin(), sameObstacle);
     });
-    if (known != tried.end()) return known->parts;
+    if (known != tried_.end()) return known->parts;
     const auto same_side = [&](const Reroute& r) { return r.folded == node.folded; };
-    if (std::count_if(tried.begin(), tried.end(), same_side) >= budget.max_reroutes) return std::nullopt;
-    tried.push_back({parking, &move, avoid, plan(), node.folded});
-    return tried.back().parts;
-  };
-  // the child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`
-  const auto detoured = [&](const Node& node, int segment, std::vector<Obstacle> avoid) -> std::optional<Node> {
+    if (std::count_if(tried_.begin(), tried_.end(), same_side) >= budget_.max_reroutes) return std::nullopt;
+    tried_.push_back({parking, &move, avoid, plan(), node.folded});
+    return tried_.back().parts;
+  }
+
+  /// The child whose move `segment` takes a path on its roadmap that also keeps clear of `avoid`.
+  std::optional<Node> detoured(const Node& node, int segment, std::vector<Obstacle> avoid) {
     const ScheduleSegment& seg = node.schedule.segments[segment];
     std::vector<DetourConstraint> detours = node.detours;
     auto it = std::find_if(detours.begin(), detours.end(), [&](const DetourConstraint& d) { return d.segment == segment; });
@@ -424,9 +599,9 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     if (it->avoid.size() == known || it->avoid.size() > kMaxObstacles) return std::nullopt;
     const std::vector<Obstacle>& obstacles = it->avoid;
     const std::optional<MoveParts> found = reroute(node, false, *it->original, obstacles, [&]() -> std::optional<MoveParts> {
-      const Move* move = graph.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
-        return checker.motionClearOf(seg.robot, graph.scene().configuration(seg.robot, a, seg.finger),
-                                     graph.scene().configuration(seg.robot, b, seg.finger), seg.held, obstacles);
+      const Move* move = graph_.detour(*it->original, [&](const core::ArmConfig& a, const core::ArmConfig& b) {
+        return checker_.motionClearOf(seg.robot, graph_.scene().configuration(seg.robot, a, seg.finger),
+                                      graph_.scene().configuration(seg.robot, b, seg.finger), seg.held, obstacles);
       });
       if (move == nullptr) return std::nullopt;
       return MoveParts{move, nullptr};
@@ -437,29 +612,29 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
     segments[segment].move = move;
     segments[segment].duration = move->duration;
     return make(std::move(segments), node.extra, std::move(detours), node.parkings, node.folded);
-  };
-  // the child where the robot, instead of standing where move `segment` starts, goes early to a
-  // configuration clear of `avoid` and waits there: the move split in two at that parking. A
-  // parking is the nearest roadmap node clear of `avoid` or, with `fold` (a robot alone), its
-  // folded configuration, further off but out of the shared workspace, where the next robot
-  // coming through does not meet it either. Folding is two moves move() caches, not a roadmap
-  // search for `avoid`: it is not counted against max_reroutes.
-  const auto parked = [&](const Node& node, int segment, const std::vector<Obstacle>& avoid,
-                          bool fold) -> std::optional<Node> {
+  }
+
+  /// The child where the robot, instead of standing where move `segment` starts, goes early to a
+  /// configuration clear of `avoid` and waits there: the move split in two at that parking. A
+  /// parking is the nearest roadmap node clear of `avoid` or, with `fold` (a robot alone), its
+  /// folded configuration, further off but out of the shared workspace, where the next robot
+  /// coming through does not meet it either. Folding is two moves move() caches, not a roadmap
+  /// search for `avoid`: it is not counted against max_reroutes.
+  std::optional<Node> parked(const Node& node, int segment, const std::vector<Obstacle>& avoid, bool fold) {
     const ScheduleSegment& seg = node.schedule.segments[segment];
     // a robot's way to a parking is not parked again: it would only go somewhere else first, in
     // a chain of parkings that stand in the same robot's way
     if (seg.to_parking || avoid.size() > kMaxParkingObstacles || (fold && seg.held)) return std::nullopt;
     const auto clear = [&](const core::ArmConfig& q) {
-      const Eigen::VectorXd f = graph.scene().configuration(seg.robot, q, seg.finger);
+      const Eigen::VectorXd f = graph_.scene().configuration(seg.robot, q, seg.finger);
       return std::all_of(avoid.begin(), avoid.end(), [&](const Obstacle& o) {
-        return checker.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
+        return checker_.robotsFree(seg.robot, f, seg.held, o.robot, o.q, o.held);
       });
     };
-    const core::ArmConfig& folded = graph.idleConfiguration(seg.robot, IdlePose::kFolded);
+    const core::ArmConfig& folded = graph_.idleConfiguration(seg.robot, IdlePose::kFolded);
     const std::optional<MoveParts> split =
-        !fold ? reroute(node, true, *seg.move, avoid, [&] { return graph.parking(*seg.move, clear); })
-        : clear(folded) ? graph.parkingAt(*seg.move, folded)
+        !fold ? reroute(node, true, *seg.move, avoid, [&] { return graph_.parking(*seg.move, clear); })
+        : clear(folded) ? graph_.parkingAt(*seg.move, folded)
                         : std::nullopt;
     if (!split) return std::nullopt;
     std::vector<ScheduleSegment> segments = node.schedule.segments;
@@ -482,125 +657,25 @@ ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory
       detours.push_back(std::move(d));
     }
     return make(std::move(segments), std::move(extra), std::move(detours), node.parkings + 1, node.folded || fold);
-  };
+  }
 
-  if (std::optional<Node> root = make(base, {}, {}, 0, false)) {
-    result.unresolved_makespan = root->schedule.makespan;
-    if (budget.makespan_below && root->schedule.makespan >= *budget.makespan_below) {
-      result.reason = "no schedule is shorter than " + std::to_string(*budget.makespan_below) + " ms";
-      return result;
-    }
-    open.push_back(std::move(*root));
-  } else {
-    result.reason = "the schedule's own precedences contradict each other";
-    return result;
-  }
-  while (!open.empty()) {
-    if (result.nodes >= budget.max_nodes || (budget.stop && budget.stop())) {
-      result.status = ConflictStatus::kBudget;
-      return result;
-    }
-    Node node = take_next();
-    ++result.nodes;
-    const ScheduleView view(graph, node.schedule);
-    std::vector<double> checked;
-    const std::optional<RobotConflict> conflict =
-        firstConflictPairs(graph, view, node.schedule, node.clear_until, node.known ? &*node.known : nullptr, &checked);
-    if (!conflict) {
-      result.status = ConflictStatus::kResolved;
-      result.constraints = static_cast<int>(node.constraints());
-      result.schedule = std::move(node.schedule);
-      return result;
-    }
-    result.reason = describe(graph, history, view, node.schedule, *conflict);
-    const int ra = conflict->robot_a, rb = conflict->robot_b;
-    // a child repeats this schedule, free before the conflict, until their first difference
-    const auto push = [&](Node child) {
-      if (budget.makespan_below && child.schedule.makespan >= *budget.makespan_below) return false;
-      const std::vector<double> differ = firstDifferences(node.schedule, child.schedule, robots);
-      child.clear_until = std::min(conflict->t, *std::min_element(differ.begin(), differ.end()));
-      child.resolves = conflict->t;
-      // per robot pair: what this node found free, as long as both robots do the same
-      PairKnowledge known{checked, std::vector<double>(checked.size(), 0.0)};
-      for (int a = 0; a < robots; ++a) {
-        for (int b = a + 1; b < robots; ++b) known.same[a * robots + b] = std::min(differ[a], differ[b]);
-      }
-      child.known = std::move(known);
-      open.push_back(std::move(child));
-      return true;
-    };
-    // time: A before B, B before A
-    bool ordered = false;
-    std::vector<Node> making_room;
-    for (const bool a_first : {true, false}) {
-      const std::optional<Precedence> p = a_first ? precedence(view, ra, conflict->item_a, rb, conflict->item_b)
-                                                  : precedence(view, rb, conflict->item_b, ra, conflict->item_a);
-      if (!p || std::find(node.extra.begin(), node.extra.end(), *p) != node.extra.end()) continue;
-      std::vector<Precedence> extra = node.extra;
-      extra.push_back(*p);
-      std::vector<int> early;
-      std::optional<Node> child = make(node.schedule.segments, extra, node.detours, node.parkings, node.folded, &early);
-      // A's move into a transition arriving early, where A cannot end before B starts just in
-      // time (both robots going into one handoff), orders them; another robot arriving early
-      // to make room is one more way where no order does, beside the reroutes below. An order
-      // whose schedule is not below the bound leaves the conflict to a reroute.
-      const bool a_early = std::all_of(early.begin(), early.end(), [&](int s) { return p->from_end && s == p->from; });
-      if (child && !a_early) making_room.push_back(std::move(*child));
-      if (child && a_early && push(std::move(*child))) ordered = true;
-    }
-    // space, when time cannot help: a robot on a move takes a detour around where the other one
-    // is meanwhile; a robot standing before a move waits somewhere out of the other one's way
-    if (ordered) continue;
-    for (Node& child : making_room) push(std::move(child));
-    const int ta = transitionOf(history, node.schedule, view.timeline(ra), conflict->item_a);
-    const int tb = transitionOf(history, node.schedule, view.timeline(rb), conflict->item_b);
-    if (ta >= 0 && tb >= 0 && ta != tb) {
-      const std::pair<int, int> pair = std::minmax(ta, tb);
-      if (std::find(result.unordered.begin(), result.unordered.end(), pair) == result.unordered.end()) {
-        result.unordered.push_back(pair);
-      }
-    }
-    // standing at home before its first segment (item -1) — in a sequential history, standing
-    // at home at all: the other's transition meets home
-    const auto at_home = [&](int robot, int item) {
-      return item == -1 || (history.sequential && item < 0 &&
-                            view.at(robot, conflict->t, false).q == graph.world().world->robots[robot].home);
-    };
-    for (const auto& [transition, item, robot] : {std::tuple{ta, conflict->item_b, rb}, std::tuple{tb, conflict->item_a, ra}}) {
-      const std::pair<int, int> blocked{transition, robot};
-      if (transition >= 0 && at_home(robot, item) &&
-          std::find(result.home_blocked.begin(), result.home_blocked.end(), blocked) == result.home_blocked.end()) {
-        result.home_blocked.push_back(blocked);
-      }
-    }
-    const std::vector<ScheduleSegment>& segments = node.schedule.segments;
-    for (const auto& [robot, item, other, other_item] :
-         {std::tuple{ra, conflict->item_a, rb, conflict->item_b}, std::tuple{rb, conflict->item_b, ra, conflict->item_a}}) {
-      const Timeline& line = view.timeline(robot);
-      if (item >= 0) {
-        const int segment = line.segments[item];
-        if (segments[segment].move == nullptr) continue;
-        if (std::optional<Node> child = detoured(node, segment, obstaclesDuring(view, node.schedule, segment, other))) {
-          push(std::move(*child));
-        }
-      } else if (const int k = -1 - item; k < static_cast<int>(line.segments.size()) && other_item >= 0) {
-        const int segment = line.segments[k];
-        if (segments[segment].move == nullptr) continue;
-        // standing no time at all: the conflict is where the segment before ends, no parking helps
-        if (k > 0) {
-          const int before = line.segments[k - 1];
-          if (node.schedule.start[before] + segments[before].duration >= node.schedule.start[segment]) continue;
-        }
-        const int busy = view.timeline(other).segments[other_item];
-        const std::vector<Obstacle> avoid = obstaclesDuring(view, node.schedule, busy, other);
-        for (const bool fold : {false, true}) {
-          if (std::optional<Node> child = parked(node, segment, avoid, fold)) push(std::move(*child));
-        }
-      }
-    }
-  }
-  result.status = ConflictStatus::kUnresolvable;
-  return result;
+  MotionHypergraph& graph_;
+  const TransitionHistory& history_;
+  const ConflictResolutionBudget& budget_;
+  SequentialSteps steps_;
+  CollisionChecker checker_;
+  int robots_;
+  std::vector<Node> open_;
+  std::uint64_t created_ = 0;
+  std::vector<Reroute> tried_;  ///< reroutes asked for so far
+  ConflictResult result_;
+};
+
+}  // namespace
+
+ConflictResult resolveConflicts(MotionHypergraph& graph, const TransitionHistory& history,
+                                const ConflictResolutionBudget& budget, SequentialSteps steps) {
+  return ConflictSearch(graph, history, budget, steps).run();
 }
 
 }  // namespace dashbed::planner

@@ -213,7 +213,19 @@ std::string describeZoneCapacity(const char* zone, std::size_t fit, std::size_t 
 
 }  // namespace
 
-core::World generateSorting(const SortingParams& params) {
+namespace {
+
+/// Where a sorting layout puts its table, robots, bins and the cells cubes may start in.
+struct SortingLayout {
+  core::FixtureSpec table;
+  std::vector<SortingRobot> robots;
+  std::vector<std::vector<Eigen::Vector2d>> exclusive_cells;  // per robot, in front of it
+  std::vector<Eigen::Vector2d> random_cells;                  // where random starts draw from
+  std::vector<Eigen::Vector2d> bin_positions = std::vector<Eigen::Vector2d>(kClassNames.size());
+  std::vector<Eigen::Vector2d> bin_outward = std::vector<Eigen::Vector2d>(kClassNames.size());  // a bigger bin grows this way
+};
+
+void checkSortingParams(const SortingParams& params) {
   const bool rows = params.layout == RobotLayout::kRows;
   const bool ring = params.layout == RobotLayout::kRing;
   if (params.layout == RobotLayout::kPaper && params.robots != 2 && params.robots != 4) {
@@ -245,92 +257,145 @@ core::World generateSorting(const SortingParams& params) {
     throw std::invalid_argument("sorting: cubes must be at least 1, got " +
                                 std::to_string(params.cubes));
   }
+}
 
-  core::World world;
-  std::vector<SortingRobot> robots;
-  std::vector<std::vector<Eigen::Vector2d>> exclusive_cells;  // per robot, in front of it
-  std::vector<Eigen::Vector2d> random_cells;                  // where random starts draw from
-  std::vector<Eigen::Vector2d> bin_positions(kClassNames.size());
-  std::vector<Eigen::Vector2d> bin_outward(kClassNames.size());  // a bigger bin grows this way
+/// Robots in two facing rows along a long table, the bins at its ends.
+SortingLayout rowsLayout(const SortingParams& params) {
+  SortingLayout layout;
+  const int columns = params.robots / 2;
+  const double half = 0.5 * (columns - 1) * kRowPitch;  // x of the last column
+  layout.table = makeTable(2 * half + 1.6, 1.4);
+  for (int r = 0; r < params.robots; ++r) {
+    const double side = r % 2 == 0 ? -1.0 : 1.0;  // r(2k) in the row at y < 0
+    const Eigen::Vector2d p(-half + (r / 2) * kRowPitch + 0.0, side * 0.7);
+    const Eigen::Vector2d u(0.0, -side);
+    layout.robots.push_back({p, u, {}});
+    layout.exclusive_cells.push_back(zoneCells({p, u, 0.25, 0.45, -0.3, 0.3}));
+  }
+  // red and blue beyond the first column, green and yellow beyond the last
+  layout.robots[0].owned_classes = {0};
+  layout.robots[1].owned_classes = {2};
+  layout.robots[params.robots - 1].owned_classes.push_back(1);
+  layout.robots[params.robots - 2].owned_classes.push_back(3);
+  layout.bin_positions = {{-half - 0.5, -0.35}, {half + 0.5, 0.35}, {-half - 0.5, 0.35}, {half + 0.5, -0.35}};
+  layout.bin_outward = {{-1.0, 0.0}, {1.0, 0.0}, {-1.0, 0.0}, {1.0, 0.0}};
+  layout.random_cells = zoneCells({{0.0, 0.0}, {1.0, 0.0}, -half - 0.3, half + 0.3, -0.26, 0.26});
+  return layout;
+}
 
-  if (rows) {
-    const int columns = params.robots / 2;
-    const double half = 0.5 * (columns - 1) * kRowPitch;  // x of the last column
-    world.fixtures.push_back(makeTable(2 * half + 1.6, 1.4));
-    for (int r = 0; r < params.robots; ++r) {
-      const double side = r % 2 == 0 ? -1.0 : 1.0;  // r(2k) in the row at y < 0
-      const Eigen::Vector2d p(-half + (r / 2) * kRowPitch + 0.0, side * 0.7);
-      const Eigen::Vector2d u(0.0, -side);
-      robots.push_back({p, u, {}});
-      exclusive_cells.push_back(zoneCells({p, u, 0.25, 0.45, -0.3, 0.3}));
-    }
-    // red and blue beyond the first column, green and yellow beyond the last
-    robots[0].owned_classes = {0};
-    robots[1].owned_classes = {2};
-    robots[params.robots - 1].owned_classes.push_back(1);
-    robots[params.robots - 2].owned_classes.push_back(3);
-    bin_positions = {{-half - 0.5, -0.35}, {half + 0.5, 0.35}, {-half - 0.5, 0.35}, {half + 0.5, -0.35}};
-    bin_outward = {{-1.0, 0.0}, {1.0, 0.0}, {-1.0, 0.0}, {1.0, 0.0}};
-    random_cells = zoneCells({{0.0, 0.0}, {1.0, 0.0}, -half - 0.3, half + 0.3, -0.26, 0.26});
-  } else if (ring) {
-    const int n = params.robots;
-    world.fixtures.push_back(makeTable(2 * kRingRadius + 0.9, 2 * kRingRadius + 0.9));
-    // (rounded, so that written coordinates carry no rounding noise: e.g. r0 faces +x exactly)
-    const auto rounded = [](const Eigen::Vector2d& x, double unit) {
-      return Eigen::Vector2d((x / unit).array().round() * unit + 0.0);
-    };
-    for (int k = 0; k < n; ++k) {
-      const double a = kPi + 2 * kPi * k / n;
-      const Eigen::Vector2d out = rounded({std::cos(a), std::sin(a)}, 1e-12);  // from the centre to the base
-      const Eigen::Vector2d u = -out, v(out.y(), -out.x());  // heading, the robot's left
-      const Eigen::Vector2d p = rounded(kRingRadius * out, 1e-6);
-      robots.push_back({p, u, {}});
-      if (k < params.classes) {
-        robots[k].owned_classes = {k};
-        bin_positions[k] = rounded(p - 0.2 * u + 0.3 * v, 1e-6);  // as in the square
-        bin_outward[k] = v;
-      }
-    }
-    // the lattice of the centre disc, each cell in the zone of the robot nearest by angle
-    exclusive_cells.resize(n);
-    const Zone square{{0.0, 0.0}, {1.0, 0.0}, -kRingCubeRadius, kRingCubeRadius, -kRingCubeRadius, kRingCubeRadius};
-    for (const Eigen::Vector2d& cell : zoneCells(square)) {
-      if (cell.norm() > kRingCubeRadius) continue;
-      random_cells.push_back(cell);
-      int nearest = 0;
-      for (int k = 1; k < n; ++k) {
-        if (-robots[k].heading_W.dot(cell) > -robots[nearest].heading_W.dot(cell) + 1e-12) nearest = k;
-      }
-      exclusive_cells[nearest].push_back(cell);
-    }
-  } else if (params.robots == 2) {
-    world.fixtures.push_back(makeTable(2.0, 1.4));
-    robots = {{{-0.7, 0.0}, {1.0, 0.0}, {0, 2}},  // r0 owns red, blue
-              {{0.7, 0.0}, {-1.0, 0.0}, {1, 3}}};  // r1 owns green, yellow
-    bin_positions = {{-0.5, -0.42}, {0.5, 0.42}, {-0.5, 0.42}, {0.5, -0.42}};
-    bin_outward = {{0.0, -1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.0, -1.0}};  // away from the cubes
-    // zones in the world frame (identity frame): robot-exclusive strips and the shared area
-    const Eigen::Vector2d o(0.0, 0.0), x(1.0, 0.0);
-    exclusive_cells = {zoneCells({o, x, -0.45, -0.25, -0.26, 0.26}), zoneCells({o, x, 0.25, 0.45, -0.26, 0.26})};
-    random_cells = zoneCells({o, x, -0.45, 0.45, -0.26, 0.26});
-  } else {
-    world.fixtures.push_back(makeTable(2.4, 2.4));
-    const std::array<Eigen::Vector2d, 4> headings{
-        Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, 1.0), Eigen::Vector2d(-1.0, 0.0),
-        Eigen::Vector2d(0.0, -1.0)};
-    for (int k = 0; k < 4; ++k) {
-      const Eigen::Vector2d& u = headings[k];
-      const Eigen::Vector2d v(-u.y(), u.x());  // the robot's left
-      // (+ 0.0 turns the -0.0 of an exact product into 0.0, which reads better when written)
-      const Eigen::Vector2d p = (-0.75 * u).array() + 0.0;
-      robots.push_back({p, u, {k}});
-      // the bin is beside the robot on its left and slightly behind it
-      bin_positions[k] = (p - 0.2 * u + 0.3 * v).array() + 0.0;
-      bin_outward[k] = v;
-      exclusive_cells.push_back(zoneCells({p, u, 0.25, 0.45, -0.15, 0.15}));
-      random_cells.insert(random_cells.end(), exclusive_cells.back().begin(), exclusive_cells.back().end());
+/// Robots evenly spaced on a circle around one shared centre, robot k owning class k.
+SortingLayout ringLayout(const SortingParams& params) {
+  SortingLayout layout;
+  const int n = params.robots;
+  layout.table = makeTable(2 * kRingRadius + 0.9, 2 * kRingRadius + 0.9);
+  // (rounded, so that written coordinates carry no rounding noise: e.g. r0 faces +x exactly)
+  const auto rounded = [](const Eigen::Vector2d& x, double unit) {
+    return Eigen::Vector2d((x / unit).array().round() * unit + 0.0);
+  };
+  for (int k = 0; k < n; ++k) {
+    const double a = kPi + 2 * kPi * k / n;
+    const Eigen::Vector2d out = rounded({std::cos(a), std::sin(a)}, 1e-12);  // from the centre to the base
+    const Eigen::Vector2d u = -out, v(out.y(), -out.x());  // heading, the robot's left
+    const Eigen::Vector2d p = rounded(kRingRadius * out, 1e-6);
+    layout.robots.push_back({p, u, {}});
+    if (k < params.classes) {
+      layout.robots[k].owned_classes = {k};
+      layout.bin_positions[k] = rounded(p - 0.2 * u + 0.3 * v, 1e-6);  // as in the square
+      layout.bin_outward[k] = v;
     }
   }
+  // the lattice of the centre disc, each cell in the zone of the robot nearest by angle
+  layout.exclusive_cells.resize(n);
+  const Zone square{{0.0, 0.0}, {1.0, 0.0}, -kRingCubeRadius, kRingCubeRadius, -kRingCubeRadius, kRingCubeRadius};
+  for (const Eigen::Vector2d& cell : zoneCells(square)) {
+    if (cell.norm() > kRingCubeRadius) continue;
+    layout.random_cells.push_back(cell);
+    int nearest = 0;
+    for (int k = 1; k < n; ++k) {
+      if (-layout.robots[k].heading_W.dot(cell) > -layout.robots[nearest].heading_W.dot(cell) + 1e-12) nearest = k;
+    }
+    layout.exclusive_cells[nearest].push_back(cell);
+  }
+  return layout;
+}
+
+/// The paper's two robots facing each other across a table.
+SortingLayout pairLayout() {
+  SortingLayout layout;
+  layout.table = makeTable(2.0, 1.4);
+  layout.robots = {{{-0.7, 0.0}, {1.0, 0.0}, {0, 2}},  // r0 owns red, blue
+            {{0.7, 0.0}, {-1.0, 0.0}, {1, 3}}};  // r1 owns green, yellow
+  layout.bin_positions = {{-0.5, -0.42}, {0.5, 0.42}, {-0.5, 0.42}, {0.5, -0.42}};
+  layout.bin_outward = {{0.0, -1.0}, {0.0, 1.0}, {0.0, 1.0}, {0.0, -1.0}};  // away from the cubes
+  // zones in the world frame (identity frame): robot-exclusive strips and the shared area
+  const Eigen::Vector2d o(0.0, 0.0), x(1.0, 0.0);
+  layout.exclusive_cells = {zoneCells({o, x, -0.45, -0.25, -0.26, 0.26}), zoneCells({o, x, 0.25, 0.45, -0.26, 0.26})};
+  layout.random_cells = zoneCells({o, x, -0.45, 0.45, -0.26, 0.26});
+  return layout;
+}
+
+/// The paper's four robots in a square facing the centre.
+SortingLayout squareLayout() {
+  SortingLayout layout;
+  layout.table = makeTable(2.4, 2.4);
+  const std::array<Eigen::Vector2d, 4> headings{
+      Eigen::Vector2d(1.0, 0.0), Eigen::Vector2d(0.0, 1.0), Eigen::Vector2d(-1.0, 0.0),
+      Eigen::Vector2d(0.0, -1.0)};
+  for (int k = 0; k < 4; ++k) {
+    const Eigen::Vector2d& u = headings[k];
+    const Eigen::Vector2d v(-u.y(), u.x());  // the robot's left
+    // (+ 0.0 turns the -0.0 of an exact product into 0.0, which reads better when written)
+    const Eigen::Vector2d p = (-0.75 * u).array() + 0.0;
+    layout.robots.push_back({p, u, {k}});
+    // the bin is beside the robot on its left and slightly behind it
+    layout.bin_positions[k] = (p - 0.2 * u + 0.3 * v).array() + 0.0;
+    layout.bin_outward[k] = v;
+    layout.exclusive_cells.push_back(zoneCells({p, u, 0.25, 0.45, -0.15, 0.15}));
+    layout.random_cells.insert(layout.random_cells.end(), layout.exclusive_cells.back().begin(), layout.exclusive_cells.back().end());
+  }
+  return layout;
+}
+
+/// The world's name and description, naming the command that generates it.
+void describeSorting(const SortingParams& params, core::World& world) {
+  const bool rows = params.layout == RobotLayout::kRows;
+  const bool ring = params.layout == RobotLayout::kRing;
+  const std::string layout = toString(params.start);
+  const bool paper = params.layout == RobotLayout::kPaper;
+  const std::string layout_option = paper ? "" : "--layout " + toString(params.layout) + " ";
+  world.name = "sort_" + std::to_string(params.robots) + "r_" + std::to_string(params.cubes) + "c_" +
+               (paper ? "" : toString(params.layout) + "_") + layout + "_s" + std::to_string(params.seed);
+  const char* placement = rows                 ? "in two facing rows along a table (the bins at its ends)"
+                          : ring               ? "evenly spaced on a circle around one shared centre"
+                          : params.robots == 2 ? "facing each other across a table"
+                                               : "in a square facing the centre";
+  const char* start = params.start == StartLayout::kRandom
+                          ? "random start in the shared workspace"
+                      : ring ? "cross start (every cube starts across the ring from its bin's robot)"
+                             : "cross start (every cube starts away from its bin's robot and must be handed over)";
+  world.description = std::string(paper ? "Sorting (DaSH paper): " : "Sorting: ") + std::to_string(params.robots) +
+                      " UR5e + Hand-E robots " + placement + " sort " + std::to_string(params.cubes) + " cubes of " +
+                      std::to_string(params.classes) + " colour classes into their bins; " + start +
+                      "; generated by `dashbed gen sort " + layout_option + "--robots " + std::to_string(params.robots) +
+                      " --cubes " + std::to_string(params.cubes) + " --classes " + std::to_string(params.classes) +
+                      " --start " + layout + " --seed " + std::to_string(params.seed) + "`.";
+}
+
+}  // namespace
+
+core::World generateSorting(const SortingParams& params) {
+  checkSortingParams(params);
+  const bool rows = params.layout == RobotLayout::kRows;
+  const bool ring = params.layout == RobotLayout::kRing;
+  SortingLayout layout = rows ? rowsLayout(params) : ring ? ringLayout(params) : params.robots == 2 ? pairLayout()
+                                                                                                  : squareLayout();
+  core::World world;
+  world.fixtures.push_back(layout.table);
+  const std::vector<SortingRobot>& robots = layout.robots;
+  const std::vector<Eigen::Vector2d>& bin_positions = layout.bin_positions;
+  const std::vector<Eigen::Vector2d>& bin_outward = layout.bin_outward;
+  std::vector<std::vector<Eigen::Vector2d>>& exclusive_cells = layout.exclusive_cells;
+  std::vector<Eigen::Vector2d>& random_cells = layout.random_cells;
 
   for (std::size_t r = 0; r < robots.size(); ++r) {
     const double yaw = std::atan2(robots[r].heading_W.y(), robots[r].heading_W.x());
@@ -400,25 +465,7 @@ core::World generateSorting(const SortingParams& params) {
     world.goals.push_back(goal);
   }
 
-  const std::string layout = toString(params.start);
-  const bool paper = params.layout == RobotLayout::kPaper;
-  const std::string layout_option = paper ? "" : "--layout " + toString(params.layout) + " ";
-  world.name = "sort_" + std::to_string(params.robots) + "r_" + std::to_string(params.cubes) + "c_" +
-               (paper ? "" : toString(params.layout) + "_") + layout + "_s" + std::to_string(params.seed);
-  const char* placement = rows                 ? "in two facing rows along a table (the bins at its ends)"
-                          : ring               ? "evenly spaced on a circle around one shared centre"
-                          : params.robots == 2 ? "facing each other across a table"
-                                               : "in a square facing the centre";
-  const char* start = params.start == StartLayout::kRandom
-                          ? "random start in the shared workspace"
-                      : ring ? "cross start (every cube starts across the ring from its bin's robot)"
-                             : "cross start (every cube starts away from its bin's robot and must be handed over)";
-  world.description = std::string(paper ? "Sorting (DaSH paper): " : "Sorting: ") + std::to_string(params.robots) +
-                      " UR5e + Hand-E robots " + placement + " sort " + std::to_string(params.cubes) + " cubes of " +
-                      std::to_string(params.classes) + " colour classes into their bins; " + start +
-                      "; generated by `dashbed gen sort " + layout_option + "--robots " + std::to_string(params.robots) +
-                      " --cubes " + std::to_string(params.cubes) + " --classes " + std::to_string(params.classes) +
-                      " --start " + layout + " --seed " + std::to_string(params.seed) + "`.";
+  describeSorting(params, world);
   return world;
 }
 
