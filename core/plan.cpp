@@ -10,6 +10,7 @@
 
 #include "core/hande.h"
 #include "core/json_pointer.h"
+#include "core/json_reader.h"
 #include "core/number_text.h"
 #include "core/text_file.h"
 
@@ -70,231 +71,35 @@ std::string at(const std::string& pointer, std::size_t index) { return jsonPoint
   throw PlanError(shown_file + ": " + (pointer.empty() ? "/" : pointer) + ": " + what);
 }
 
-// ---- JSON text -> document ----------------------------------------------------------------
-
-// "line L, column C" of a byte offset into text (1-based)
-std::string lineAndColumn(std::string_view text, std::size_t byte) {
-  byte = std::min(byte, text.size());
-  int line = 1;
-  std::size_t line_start = 0;
-  for (std::size_t i = 0; i < byte; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      line_start = i + 1;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(byte - line_start + 1);
-}
-
-// nlohmann's message without its "[json.exception.parse_error.101] " prefix
-std::string withoutExceptionId(const std::string& what) {
-  if (what.rfind("[json.exception.", 0) == 0) {
-    const std::size_t close = what.find("] ");
-    if (close != std::string::npos) return what.substr(close + 2);
-  }
-  return what;
-}
-
-/// Deeper nesting than any plan has is refused while parsing: a parsed value that deep would
-/// be copied and destroyed recursively, overflowing the stack.
-constexpr std::size_t kMaxNesting = 256;
-
-/// Thrown by the parser's callback at the first value nested deeper than kMaxNesting.
-struct TooDeep {
-  std::string pointer;
-};
-
-// Finds the first key that occurs twice in one object (nlohmann keeps the last silently).
-// Runs as the parser's callback; remembers the key's pointer. Throws TooDeep.
-class DuplicateKeyFinder {
- public:
-  bool operator()(int /*depth*/, Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        if (frames_.size() >= kMaxNesting) throw TooDeep{pointer()};
-        frames_.push_back({event == Json::parse_event_t::object_start, {}, {}, 0});
-        break;
-      case Json::parse_event_t::key: {
-        Frame& frame = frames_.back();
-        frame.key = parsed.get<std::string>();
-        if (!frame.keys.insert(frame.key).second && !duplicate_) duplicate_ = pointer();
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        frames_.pop_back();
-        elementDone();
-        break;
-      case Json::parse_event_t::value:
-        elementDone();
-        break;
-    }
-    return true;
-  }
-
-  const std::optional<std::string>& duplicate() const { return duplicate_; }
-
- private:
-  struct Frame {
-    bool is_object = true;
-    std::set<std::string> keys;
-    std::string key;        // objects: the current key
-    std::size_t index = 0;  // arrays: the current element
-  };
-
-  void elementDone() {
-    if (!frames_.empty() && !frames_.back().is_object) ++frames_.back().index;
-  }
-
-  std::string pointer() const {
-    std::string text;
-    for (const Frame& frame : frames_) {
-      text = frame.is_object ? at(text, frame.key) : at(text, frame.index);
-    }
-    return text;
-  }
-
-  std::vector<Frame> frames_;
-  std::optional<std::string> duplicate_;
-};
-
-Json parseDocument(std::string_view text, const std::string& file) {
-  DuplicateKeyFinder finder;
-  Json document;
-  try {
-    document = Json::parse(text.begin(), text.end(), std::ref(finder));
-  } catch (const Json::parse_error& error) {
-    // nlohmann's message has line and column; add the byte offset
-    fail(file, "",
-         "invalid JSON: " + withoutExceptionId(error.what()) + " (byte " +
-             std::to_string(error.byte) + ")");
-  } catch (const Json::exception& error) {
-    // e.g. "number overflow parsing '1e400'": locate the quoted literal in the text
-    std::string what = withoutExceptionId(error.what());
-    const std::size_t open = what.find('\'');
-    const std::size_t close = what.rfind('\'');
-    if (open != std::string::npos && close > open + 1) {
-      const std::size_t found = text.find(what.substr(open + 1, close - open - 1));
-      if (found != std::string_view::npos) what += " at " + lineAndColumn(text, found);
-    }
-    fail(file, "", "invalid JSON: " + what);
-  } catch (const TooDeep& deep) {
-    fail(file, deep.pointer, "nested deeper than " + std::to_string(kMaxNesting) + " levels");
-  }
-  if (finder.duplicate()) fail(file, *finder.duplicate(), "duplicate key");
-  return document;
-}
-
 // ---- JSON document -> Plan ----------------------------------------------------------------
 
-std::string describe(const Json& value) {
-  switch (value.type()) {
-    case Json::value_t::null:
-      return "null";
-    case Json::value_t::object:
-      return "an object";
-    case Json::value_t::array:
-      return "an array";
-    case Json::value_t::string:
-      return "a string";
-    case Json::value_t::boolean:
-      return "a boolean";
-    case Json::value_t::number_integer:
-    case Json::value_t::number_unsigned:
-    case Json::value_t::number_float:
-      return "a number";
-    default:
-      return "something else";
+using PlanReader = JsonReader<PlanError>;
+
+// exactly six numbers; `what` e.g. "joint positions"
+std::array<double, 6> sixNumbers(const PlanReader& reader, const Json& value, const std::string& pointer,
+                                 std::string_view what) {
+  reader.array(value, pointer);
+  if (value.size() != 6) {
+    reader.fail(pointer, "expected 6 " + std::string(what) + ", got " + std::to_string(value.size()));
   }
+  std::array<double, 6> numbers{};
+  for (std::size_t i = 0; i < 6; ++i) numbers[i] = reader.number(value[i], at(pointer, i));
+  return numbers;
 }
 
-// Type-checked access to one document, failing with "file: pointer: what".
-class Reader {
- public:
-  explicit Reader(const std::string& file) : file_(file) {}
-
-  [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
-    core::fail(file_, pointer, what);
-  }
-
-  void expectType(const Json& value, const std::string& pointer, bool ok,
-                  std::string_view expected) const {
-    if (!ok) fail(pointer, "expected " + std::string(expected) + ", got " + describe(value));
-  }
-
-  // an object whose keys are all in `allowed`
-  void expectObject(const Json& value, const std::string& pointer,
-                    std::initializer_list<std::string_view> allowed) const {
-    expectType(value, pointer, value.is_object(), "an object");
-    for (const auto& [key, member] : value.items()) {
-      if (std::find(allowed.begin(), allowed.end(), key) == allowed.end()) {
-        fail(at(pointer, key), "unknown key (expected " + nameList(allowed, [](std::string_view k) {
-                                 return std::string(k);
-                               }) + ")");
-      }
-    }
-  }
-
-  const Json& required(const Json& object, const std::string& pointer, std::string_view key,
-                       std::string_view context = {}) const {
-    const auto it = object.find(key);
-    if (it == object.end()) {
-      fail(at(pointer, key),
-           context.empty() ? "missing" : "missing (" + std::string(context) + ")");
-    }
-    return *it;
-  }
-
-  const Json* optional(const Json& object, std::string_view key) const {
-    const auto it = object.find(key);
-    return it == object.end() ? nullptr : &*it;
-  }
-
-  double number(const Json& value, const std::string& pointer) const {
-    expectType(value, pointer, value.is_number(), "a number");
-    return value.get<double>();
-  }
-
-  std::string string(const Json& value, const std::string& pointer) const {
-    expectType(value, pointer, value.is_string(), "a string");
-    return value.get<std::string>();
-  }
-
-  const Json& array(const Json& value, const std::string& pointer) const {
-    expectType(value, pointer, value.is_array(), "an array");
-    return value;
-  }
-
-  // exactly six numbers; `what` e.g. "joint positions"
-  std::array<double, 6> sixNumbers(const Json& value, const std::string& pointer,
-                                   std::string_view what) const {
-    array(value, pointer);
-    if (value.size() != 6) {
-      fail(pointer, "expected 6 " + std::string(what) + ", got " + std::to_string(value.size()));
-    }
-    std::array<double, 6> numbers{};
-    for (std::size_t i = 0; i < 6; ++i) numbers[i] = number(value[i], at(pointer, i));
-    return numbers;
-  }
-
- private:
-  const std::string& file_;
-};
-
-TrajectoryPoint readPoint(const Reader& reader, const Json& value, const std::string& pointer) {
+TrajectoryPoint readPoint(const PlanReader& reader, const Json& value, const std::string& pointer) {
   reader.expectObject(value, pointer, {"t", "q", "qd"});
   TrajectoryPoint point;
   point.t = reader.number(reader.required(value, pointer, "t"), at(pointer, "t"));
   point.q =
-      reader.sixNumbers(reader.required(value, pointer, "q"), at(pointer, "q"), "joint positions");
+      sixNumbers(reader, reader.required(value, pointer, "q"), at(pointer, "q"), "joint positions");
   if (const Json* qd = reader.optional(value, "qd")) {
-    point.qd = reader.sixNumbers(*qd, at(pointer, "qd"), "joint velocities");
+    point.qd = sixNumbers(reader, *qd, at(pointer, "qd"), "joint velocities");
   }
   return point;
 }
 
-RobotTrajectory readRobot(const Reader& reader, const Json& value, const std::string& pointer) {
+RobotTrajectory readRobot(const PlanReader& reader, const Json& value, const std::string& pointer) {
   reader.expectObject(value, pointer, {"name", "joint_names", "points"});
   RobotTrajectory trajectory;
   trajectory.robot = reader.string(reader.required(value, pointer, "name"), at(pointer, "name"));
@@ -316,7 +121,7 @@ RobotTrajectory readRobot(const Reader& reader, const Json& value, const std::st
   return trajectory;
 }
 
-GripperCommand readGripperCommand(const Reader& reader, const Json& value,
+GripperCommand readGripperCommand(const PlanReader& reader, const Json& value,
                                   const std::string& pointer) {
   reader.expectObject(value, pointer, {"robot", "t", "command", "force"});
   GripperCommand command;
@@ -338,7 +143,7 @@ GripperCommand readGripperCommand(const Reader& reader, const Json& value,
   return command;
 }
 
-PlanAction readAction(const Reader& reader, const Json& value, const std::string& pointer) {
+PlanAction readAction(const PlanReader& reader, const Json& value, const std::string& pointer) {
   reader.expectType(value, pointer, value.is_object(), "an object");
   PlanAction action;
   const std::string type =
@@ -376,8 +181,8 @@ PlanAction readAction(const Reader& reader, const Json& value, const std::string
   return action;
 }
 
-Plan readPlan(const Reader& reader, const Json& document) {
-  if (!document.is_object()) reader.fail("", "expected a JSON object, got " + describe(document));
+Plan readPlan(const PlanReader& reader, const Json& document) {
+  if (!document.is_object()) reader.fail("", "expected a JSON object, got " + describeJsonValue(document));
 
   // the version first: a file of another kind or version fails on it, not on its keys
   const auto version = document.find("dashbed_plan");
@@ -399,7 +204,7 @@ Plan readPlan(const Reader& reader, const Json& document) {
   if (const Json* seed = reader.optional(document, "seed")) {
     if (!seed->is_number_unsigned()) {
       reader.fail("/seed", "expected a non-negative integer, got " +
-                               (seed->is_number() ? seed->dump() : describe(*seed)));
+                               (seed->is_number() ? seed->dump() : describeJsonValue(*seed)));
     }
     plan.seed = seed->get<std::uint64_t>();
   }
@@ -644,8 +449,8 @@ void checkPlanStructure(const Plan& plan, const std::string& file_name) {
 }
 
 Plan parsePlanJson(std::string_view json_text, const std::string& file_name) {
-  const Json document = parseDocument(json_text, file_name);
-  const Reader reader(file_name);
+  const PlanReader reader(file_name);
+  const Json document = reader.parse(json_text);
   Plan plan = readPlan(reader, document);
   checkPlanStructure(plan, file_name);
   return plan;

@@ -5,6 +5,7 @@
 #include "sim/report.h"
 
 #include "core/json_pointer.h"
+#include "core/json_reader.h"
 #include "core/number_text.h"
 #include "core/text_file.h"
 
@@ -90,99 +91,53 @@ OrderedJson toJson(const ActionReport& action) {
 std::string pointerAt(const std::string& pointer, std::string_view key) { return core::jsonPointerAt(pointer, key); }
 std::string pointerAt(const std::string& pointer, std::size_t index) { return core::jsonPointerAt(pointer, index); }
 
-// type-checked access, failing with "file: pointer: what"
-class Reader {
- public:
-  explicit Reader(const std::string& file) : file_(file.empty() ? "<memory>" : file) {}
+using ReportReader = core::JsonReader<ReportError>;
 
-  [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
-    throw ReportError(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + what);
+// null (a non-finite number when written) reads as NaN
+double numberOrNaN(const ReportReader& reader, const Json& object, const std::string& pointer, std::string_view key) {
+  const Json& value = reader.required(object, pointer, key);
+  if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
+  return reader.number(value, pointerAt(pointer, key));
+}
+
+std::optional<double> optionalNumber(const ReportReader& reader, const Json& object, const std::string& pointer,
+                                     std::string_view key) {
+  const Json& value = reader.required(object, pointer, key);
+  if (value.is_null()) return std::nullopt;
+  reader.expectType(value, pointerAt(pointer, key), value.is_number(), "a number or null");
+  return value.get<double>();
+}
+
+Verdict verdict(const ReportReader& reader, const Json& object, const std::string& pointer, std::string_view key) {
+  const std::string text = reader.string(object, pointer, key);
+  if (text == "passed") return Verdict::kPassed;
+  if (text == "failed") return Verdict::kFailed;
+  reader.fail(pointerAt(pointer, key), "expected \"passed\" or \"failed\", got \"" + text + "\"");
+}
+
+core::ActionType actionType(const ReportReader& reader, const Json& object, const std::string& pointer) {
+  const std::string text = reader.string(object, pointer, "type");
+  for (const core::ActionType type : {core::ActionType::kPick, core::ActionType::kPlace, core::ActionType::kHandoff}) {
+    if (text == core::toString(type)) return type;
   }
+  reader.fail(pointerAt(pointer, "type"), "unknown action type \"" + text + "\"");
+}
 
-  const Json& field(const Json& object, const std::string& pointer, std::string_view key) const {
-    if (!object.is_object()) fail(pointer, "expected an object");
-    const auto it = object.find(key);
-    if (it == object.end()) fail(pointerAt(pointer, key), "missing");
-    return *it;
-  }
-
-  std::string string(const Json& object, const std::string& pointer, std::string_view key) const {
-    const Json& value = field(object, pointer, key);
-    if (!value.is_string()) fail(pointerAt(pointer, key), "expected a string");
-    return value.get<std::string>();
-  }
-
-  // null (a non-finite number when written) reads as NaN
-  double number(const Json& object, const std::string& pointer, std::string_view key) const {
-    const Json& value = field(object, pointer, key);
-    if (value.is_null()) return std::numeric_limits<double>::quiet_NaN();
-    if (!value.is_number()) fail(pointerAt(pointer, key), "expected a number");
-    return value.get<double>();
-  }
-
-  std::optional<double> optionalNumber(const Json& object, const std::string& pointer,
-                                       std::string_view key) const {
-    const Json& value = field(object, pointer, key);
-    if (value.is_null()) return std::nullopt;
-    if (!value.is_number()) fail(pointerAt(pointer, key), "expected a number or null");
-    return value.get<double>();
-  }
-
-  std::uint64_t unsignedInteger(const Json& object, const std::string& pointer,
-                                std::string_view key) const {
-    const Json& value = field(object, pointer, key);
-    if (!value.is_number_unsigned())
-      fail(pointerAt(pointer, key), "expected a non-negative integer");
-    return value.get<std::uint64_t>();
-  }
-
-  bool boolean(const Json& object, const std::string& pointer, std::string_view key) const {
-    const Json& value = field(object, pointer, key);
-    if (!value.is_boolean()) fail(pointerAt(pointer, key), "expected true or false");
-    return value.get<bool>();
-  }
-
-  const Json& array(const Json& object, const std::string& pointer, std::string_view key) const {
-    const Json& value = field(object, pointer, key);
-    if (!value.is_array()) fail(pointerAt(pointer, key), "expected an array");
-    return value;
-  }
-
-  Verdict verdict(const Json& object, const std::string& pointer, std::string_view key) const {
-    const std::string text = string(object, pointer, key);
-    if (text == "passed") return Verdict::kPassed;
-    if (text == "failed") return Verdict::kFailed;
-    fail(pointerAt(pointer, key), "expected \"passed\" or \"failed\", got \"" + text + "\"");
-  }
-
-  core::ActionType actionType(const Json& object, const std::string& pointer) const {
-    const std::string text = string(object, pointer, "type");
-    for (const core::ActionType type :
-         {core::ActionType::kPick, core::ActionType::kPlace, core::ActionType::kHandoff}) {
-      if (text == core::toString(type)) return type;
-    }
-    fail(pointerAt(pointer, "type"), "unknown action type \"" + text + "\"");
-  }
-
- private:
-  std::string file_;
-};
-
-Measurement readMeasurement(const Reader& reader, const Json& json, const std::string& pointer) {
+Measurement readMeasurement(const ReportReader& reader, const Json& json, const std::string& pointer) {
   Measurement measurement;
   measurement.name = reader.string(json, pointer, "name");
-  measurement.value = reader.number(json, pointer, "value");
+  measurement.value = numberOrNaN(reader, json, pointer, "value");
   measurement.unit = reader.string(json, pointer, "unit");
-  measurement.threshold = reader.optionalNumber(json, pointer, "threshold");
+  measurement.threshold = optionalNumber(reader, json, pointer, "threshold");
   measurement.comparison = reader.string(json, pointer, "comparison");
   measurement.passed = reader.boolean(json, pointer, "passed");
   return measurement;
 }
 
-ActionReport readAction(const Reader& reader, const Json& json, const std::string& pointer) {
+ActionReport readAction(const ReportReader& reader, const Json& json, const std::string& pointer) {
   ActionReport action;
   action.id = reader.string(json, pointer, "id");
-  action.type = reader.actionType(json, pointer);
+  action.type = actionType(reader, json, pointer);
   const Json& robots = reader.array(json, pointer, "robots");
   for (std::size_t i = 0; i < robots.size(); ++i) {
     if (!robots[i].is_string())
@@ -192,13 +147,13 @@ ActionReport readAction(const Reader& reader, const Json& json, const std::strin
   action.object = reader.string(json, pointer, "object");
   if (json.contains("region")) action.region = reader.string(json, pointer, "region");
   const std::string planned = pointerAt(pointer, "planned");
-  action.planned_start = reader.number(reader.field(json, pointer, "planned"), planned, "start");
-  action.planned_end = reader.number(reader.field(json, pointer, "planned"), planned, "end");
+  action.planned_start = numberOrNaN(reader, reader.required(json, pointer, "planned"), planned, "start");
+  action.planned_end = numberOrNaN(reader, reader.required(json, pointer, "planned"), planned, "end");
   const std::string observed = pointerAt(pointer, "observed");
-  const Json& observed_json = reader.field(json, pointer, "observed");
-  action.observed_start = reader.optionalNumber(observed_json, observed, "start");
-  action.observed_end = reader.optionalNumber(observed_json, observed, "end");
-  action.verdict = reader.verdict(json, pointer, "verdict");
+  const Json& observed_json = reader.required(json, pointer, "observed");
+  action.observed_start = optionalNumber(reader, observed_json, observed, "start");
+  action.observed_end = optionalNumber(reader, observed_json, observed, "end");
+  action.verdict = verdict(reader, json, pointer, "verdict");
   action.failure = reader.string(json, pointer, "failure");
   const Json& measurements = reader.array(json, pointer, "measurements");
   for (std::size_t i = 0; i < measurements.size(); ++i) {
@@ -208,7 +163,7 @@ ActionReport readAction(const Reader& reader, const Json& json, const std::strin
   return action;
 }
 
-Report readReport(const Reader& reader, const Json& document) {
+Report readReport(const ReportReader& reader, const Json& document) {
   if (!document.is_object()) reader.fail("", "expected a JSON object");
   const auto version = document.find("dashbed_report");
   if (version == document.end()) reader.fail("/dashbed_report", "missing: not a dashbed report");
@@ -222,8 +177,8 @@ Report readReport(const Reader& reader, const Json& document) {
   report.world = reader.string(document, "", "world");
   report.plan_file = reader.string(document, "", "plan");
   report.seed = reader.unsignedInteger(document, "", "seed");
-  report.time_step = reader.number(document, "", "time_step");
-  report.simulated_time = reader.number(document, "", "simulated_time");
+  report.time_step = numberOrNaN(reader, document, "", "time_step");
+  report.simulated_time = numberOrNaN(reader, document, "", "simulated_time");
 
   const Json& actions = reader.array(document, "", "actions");
   for (std::size_t i = 0; i < actions.size(); ++i) {
@@ -233,7 +188,7 @@ Report readReport(const Reader& reader, const Json& document) {
   for (std::size_t i = 0; i < events.size(); ++i) {
     const std::string pointer = pointerAt("/events", i);
     ExecutionEvent event;
-    event.t = reader.number(events[i], pointer, "t");
+    event.t = numberOrNaN(reader, events[i], pointer, "t");
     event.kind = reader.string(events[i], pointer, "kind");
     event.detail = reader.string(events[i], pointer, "detail");
     event.action = reader.string(events[i], pointer, "action");
@@ -253,17 +208,17 @@ Report readReport(const Reader& reader, const Json& document) {
     const std::string pointer = pointerAt("/robots", i);
     RobotExecution robot;
     robot.robot = reader.string(robots[i], pointer, "robot");
-    robot.max_tracking_error = reader.number(robots[i], pointer, "max_tracking_error");
-    robot.torque_saturation = reader.number(robots[i], pointer, "torque_saturation");
-    robot.max_effort_ratio = reader.number(robots[i], pointer, "max_effort_ratio");
+    robot.max_tracking_error = numberOrNaN(reader, robots[i], pointer, "max_tracking_error");
+    robot.torque_saturation = numberOrNaN(reader, robots[i], pointer, "torque_saturation");
+    robot.max_effort_ratio = numberOrNaN(reader, robots[i], pointer, "max_effort_ratio");
     report.robots.push_back(std::move(robot));
   }
 
   if (document.contains("final_still")) report.final_still = reader.string(document, "", "final_still");
 
   // the summary: the execution verdict lives there; the counts must agree with the actions
-  const Json& summary = reader.field(document, "", "summary");
-  report.execution_verdict = reader.verdict(summary, "/summary", "execution");
+  const Json& summary = reader.required(document, "", "summary");
+  report.execution_verdict = verdict(reader, summary, "/summary", "execution");
   report.execution_failure = reader.string(summary, "/summary", "execution_failure");
   const std::pair<std::string_view, int> counts[] = {
       {"actions", static_cast<int>(report.actions.size())},
@@ -276,7 +231,7 @@ Report readReport(const Reader& reader, const Json& document) {
                                                   std::to_string(expected) + " in /actions");
     }
   }
-  if (reader.verdict(summary, "/summary", "verdict") !=
+  if (verdict(reader, summary, "/summary", "verdict") !=
       (report.passed() ? Verdict::kPassed : Verdict::kFailed)) {
     reader.fail("/summary/verdict", "disagrees with the actions and the execution verdict");
   }
@@ -483,14 +438,8 @@ std::string writeReportJson(const Report& report) {
 }
 
 Report readReportJson(std::string_view json_text, const std::string& file_name) {
-  const Reader reader(file_name);
-  Json document;
-  try {
-    document = Json::parse(json_text.begin(), json_text.end());
-  } catch (const Json::exception& error) {
-    reader.fail("", std::string("invalid JSON: ") + error.what());
-  }
-  return readReport(reader, document);
+  const ReportReader reader(file_name);
+  return readReport(reader, reader.parse(json_text));
 }
 
 Report loadReportFile(const std::filesystem::path& file) {

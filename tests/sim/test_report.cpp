@@ -395,7 +395,7 @@ TEST_CASE("JSON report: bad input is rejected with its pointer", "[report]") {
   rejects(bad, "/actions/0/type: unknown action type \"push\"");
   bad = good;
   bad["events"][0]["t"] = "soon";
-  rejects(bad, "/events/0/t: expected a number");
+  rejects(bad, "/events/0/t: expected a number, got a string");
   REQUIRE_THROWS_WITH(readReportJson("{", "r.json"),
                       Catch::Matchers::StartsWith("r.json: /: invalid JSON: "));
   REQUIRE_THROWS_AS(loadReportFile("/nonexistent/report.json"), ReportError);

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/json_reader.h"
 #include "core/number_text.h"
 #include "core/robot_set.h"
 #include "core/world_io.h"
@@ -264,37 +265,58 @@ std::string writeOutcomesJson(const std::vector<TrialOutcome>& outcomes) {
 }
 
 std::vector<TrialOutcome> readOutcomesJson(std::string_view json_text) {
-  std::vector<TrialOutcome> outcomes;
-  try {
-    // ordered: measurements keep their order
-    const nlohmann::ordered_json in = nlohmann::ordered_json::parse(json_text);
-    for (const nlohmann::ordered_json& trial : in) {
-      TrialOutcome o;
-      o.index = trial.at("index").get<std::size_t>();
-      o.point = trial.at("point").get<int>();
-      o.seed = trial.at("seed").get<std::uint64_t>();
-      o.passed = trial.at("passed").get<bool>();
-      if (!trial.at("primary").is_null()) o.primary = parseFailureClass(trial.at("primary").get<std::string>());
-      for (const auto& c : trial.at("classes")) o.classes.push_back(parseFailureClass(c.get<std::string>()));
-      o.failure = trial.at("failure").get<std::string>();
-      for (const auto& a : trial.at("actions")) {
-        ActionOutcome& action = o.actions.emplace_back(ActionOutcome{parseActionType(a.at("type").get<std::string>()),
-                                                                     a.at("id").get<std::string>(),
-                                                                     a.at("passed").get<bool>(), {}});
-        for (const auto& [name, value] : a.at("measurements").items()) {
-          action.measurements.push_back({name, value.get<double>()});
-        }
-      }
-      for (const auto& p : trial.at("objects")) {
-        o.objects.push_back({p.at("dx").get<double>(), p.at("dy").get<double>(), p.at("dyaw").get<double>(),
-                             p.at("mass_scale").get<double>(), p.at("friction_scale").get<double>()});
-      }
-      outcomes.push_back(std::move(o));
+  // ordered: measurements keep their order
+  using Json = nlohmann::ordered_json;
+  const core::JsonReader<std::runtime_error, Json> reader("trial outcomes");
+  const Json in = reader.parse(json_text);
+  const auto at = [](const std::string& pointer, auto key) { return core::jsonPointerAt(pointer, key); };
+  // a name the reading function knows, or the message of the invalid_argument it throws
+  const auto known = [&](const std::string& pointer, const auto& parse, const std::string& text) {
+    try {
+      return parse(text);
+    } catch (const std::invalid_argument& e) {
+      reader.fail(pointer, e.what());
     }
-  } catch (const nlohmann::json::exception& e) {
-    throw std::runtime_error(std::string("trial outcomes: ") + e.what());
-  } catch (const std::invalid_argument& e) {
-    throw std::runtime_error(std::string("trial outcomes: ") + e.what());
+  };
+  std::vector<TrialOutcome> outcomes;
+  for (std::size_t i = 0; i < reader.array(in, "").size(); ++i) {
+    const Json& trial = in[i];
+    const std::string p = at("", i);
+    TrialOutcome o;
+    o.index = reader.unsignedInteger(trial, p, "index");
+    o.point = static_cast<int>(reader.unsignedInteger(trial, p, "point"));
+    o.seed = reader.unsignedInteger(trial, p, "seed");
+    o.passed = reader.boolean(trial, p, "passed");
+    if (const Json& primary = reader.required(trial, p, "primary"); !primary.is_null()) {
+      o.primary = known(at(p, "primary"), parseFailureClass, reader.string(primary, at(p, "primary")));
+    }
+    const Json& classes = reader.array(trial, p, "classes");
+    for (std::size_t c = 0; c < classes.size(); ++c) {
+      const std::string q = at(at(p, "classes"), c);
+      o.classes.push_back(known(q, parseFailureClass, reader.string(classes[c], q)));
+    }
+    o.failure = reader.string(trial, p, "failure");
+    const Json& actions = reader.array(trial, p, "actions");
+    for (std::size_t k = 0; k < actions.size(); ++k) {
+      const Json& a = actions[k];
+      const std::string q = at(at(p, "actions"), k);
+      ActionOutcome& action = o.actions.emplace_back(ActionOutcome{
+          known(at(q, "type"), parseActionType, reader.string(a, q, "type")), reader.string(a, q, "id"),
+          reader.boolean(a, q, "passed"), {}});
+      const Json& measurements = reader.required(a, q, "measurements");
+      reader.expectType(measurements, at(q, "measurements"), measurements.is_object(), "an object");
+      for (const auto& [name, value] : measurements.items()) {
+        action.measurements.push_back({name, reader.number(value, at(at(q, "measurements"), name))});
+      }
+    }
+    const Json& objects = reader.array(trial, p, "objects");
+    for (std::size_t k = 0; k < objects.size(); ++k) {
+      const Json& d = objects[k];
+      const std::string q = at(at(p, "objects"), k);
+      o.objects.push_back({reader.number(d, q, "dx"), reader.number(d, q, "dy"), reader.number(d, q, "dyaw"),
+                           reader.number(d, q, "mass_scale"), reader.number(d, q, "friction_scale")});
+    }
+    outcomes.push_back(std::move(o));
   }
   return outcomes;
 }

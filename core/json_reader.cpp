@@ -1,0 +1,164 @@
+#include "core/json_reader.h"
+
+#include <algorithm>
+#include <functional>
+#include <optional>
+#include <set>
+#include <vector>
+
+namespace dashbed::core {
+namespace {
+
+// "line L, column C" of a byte offset into text (1-based)
+std::string lineAndColumn(std::string_view text, std::size_t byte) {
+  byte = std::min(byte, text.size());
+  int line = 1;
+  std::size_t line_start = 0;
+  for (std::size_t i = 0; i < byte; ++i) {
+    if (text[i] == '\n') {
+      ++line;
+      line_start = i + 1;
+    }
+  }
+  return "line " + std::to_string(line) + ", column " + std::to_string(byte - line_start + 1);
+}
+
+// nlohmann's message without its "[json.exception.parse_error.101] " prefix
+std::string withoutExceptionId(const std::string& what) {
+  if (what.rfind("[json.exception.", 0) == 0) {
+    const std::size_t close = what.find("] ");
+    if (close != std::string::npos) return what.substr(close + 2);
+  }
+  return what;
+}
+
+/// Thrown by the parser's callback at the first value nested deeper than kMaxJsonNesting.
+struct TooDeep {
+  std::string pointer;
+};
+
+// Finds the first key that occurs twice in one object (nlohmann keeps the last silently).
+// Runs as the parser's callback; remembers the key's pointer. Throws TooDeep.
+template <class Json>
+class DuplicateKeyFinder {
+ public:
+  bool operator()(int /*depth*/, typename Json::parse_event_t event, Json& parsed) {
+    switch (event) {
+      case Json::parse_event_t::object_start:
+      case Json::parse_event_t::array_start:
+        if (frames_.size() >= kMaxJsonNesting) throw TooDeep{pointer()};
+        frames_.push_back({event == Json::parse_event_t::object_start, {}, {}, 0});
+        break;
+      case Json::parse_event_t::key: {
+        Frame& frame = frames_.back();
+        frame.key = parsed.template get<std::string>();
+        if (!frame.keys.insert(frame.key).second && !duplicate_) duplicate_ = pointer();
+        break;
+      }
+      case Json::parse_event_t::object_end:
+      case Json::parse_event_t::array_end:
+        frames_.pop_back();
+        elementDone();
+        break;
+      case Json::parse_event_t::value:
+        elementDone();
+        break;
+    }
+    return true;
+  }
+
+  const std::optional<std::string>& duplicate() const { return duplicate_; }
+
+ private:
+  struct Frame {
+    bool is_object = true;
+    std::set<std::string> keys;
+    std::string key;        // objects: the current key
+    std::size_t index = 0;  // arrays: the current element
+  };
+
+  void elementDone() {
+    if (!frames_.empty() && !frames_.back().is_object) ++frames_.back().index;
+  }
+
+  std::string pointer() const {
+    std::string text;
+    for (const Frame& frame : frames_) {
+      text = frame.is_object ? jsonPointerAt(text, frame.key) : jsonPointerAt(text, frame.index);
+    }
+    return text;
+  }
+
+  std::vector<Frame> frames_;
+  std::optional<std::string> duplicate_;
+};
+
+}  // namespace
+
+template <class Json>
+Json parseJsonText(std::string_view text) {
+  DuplicateKeyFinder<Json> finder;
+  Json document;
+  try {
+    document = Json::parse(text.begin(), text.end(), std::ref(finder));
+  } catch (const typename Json::parse_error& error) {
+    // nlohmann's message has line and column; add the byte offset
+    throw JsonProblem{"", "invalid JSON: " + withoutExceptionId(error.what()) + " (byte " +
+                              std::to_string(error.byte) + ")"};
+  } catch (const typename Json::exception& error) {
+    // e.g. "number overflow parsing '1e400'": locate the quoted literal in the text
+    std::string what = withoutExceptionId(error.what());
+    const std::size_t open = what.find('\'');
+    const std::size_t close = what.rfind('\'');
+    if (open != std::string::npos && close > open + 1) {
+      const std::size_t found = text.find(what.substr(open + 1, close - open - 1));
+      if (found != std::string_view::npos) what += " at " + lineAndColumn(text, found);
+    }
+    throw JsonProblem{"", "invalid JSON: " + what};
+  } catch (const TooDeep& deep) {
+    throw JsonProblem{deep.pointer, "nested deeper than " + std::to_string(kMaxJsonNesting) + " levels"};
+  }
+  if (finder.duplicate()) throw JsonProblem{*finder.duplicate(), "duplicate key"};
+  return document;
+}
+
+template <class Json>
+std::string describeJsonValue(const Json& value) {
+  switch (value.type()) {
+    case Json::value_t::null:
+      return "null";
+    case Json::value_t::object:
+      return "an object";
+    case Json::value_t::array:
+      return "an array";
+    case Json::value_t::string:
+      return "a string";
+    case Json::value_t::boolean:
+      return "a boolean";
+    case Json::value_t::number_integer:
+    case Json::value_t::number_unsigned:
+    case Json::value_t::number_float:
+      return "a number";
+    default:
+      return "something else";
+  }
+}
+
+template nlohmann::json parseJsonText<nlohmann::json>(std::string_view text);
+template nlohmann::ordered_json parseJsonText<nlohmann::ordered_json>(std::string_view text);
+template std::string describeJsonValue<nlohmann::json>(const nlohmann::json& value);
+template std::string describeJsonValue<nlohmann::ordered_json>(const nlohmann::ordered_json& value);
+
+std::string listOfNames(std::initializer_list<std::string_view> names) {
+  constexpr std::size_t kMaxNames = 12;
+  std::string text;
+  std::size_t count = 0;
+  for (const std::string_view name : names) {
+    if (count == kMaxNames) return text + ", ...";
+    if (count++ > 0) text += ", ";
+    text += name;
+  }
+  return text.empty() ? "none" : text;
+}
+
+}  // namespace dashbed::core
