@@ -80,4 +80,55 @@ JointReference TrajectoryInterpolator::at(double t) const {
   return ref;
 }
 
+std::array<JointPeaks, 6> TrajectoryInterpolator::peaks() const {
+  std::array<JointPeaks, 6> peaks;
+  for (int j = 0; j < 6; ++j) {
+    JointPeaks& p = peaks[j];
+    p.q_min = p.q_max = q_.front()[j];
+    p.t_q_min = p.t_q_max = t_.front();
+    const auto position = [&](double q, double t) {
+      if (q < p.q_min) p.q_min = q, p.t_q_min = t;
+      if (q > p.q_max) p.q_max = q, p.t_q_max = t;
+    };
+    const auto speed = [&](double v, double t) {
+      if (std::abs(v) > p.speed) p.speed = std::abs(v), p.t_speed = t;
+    };
+    const auto acceleration = [&](double a, double t) {
+      if (std::abs(a) > p.acceleration) p.acceleration = std::abs(a), p.t_acceleration = t;
+    };
+    for (std::size_t i = 0; i + 1 < t_.size(); ++i) {
+      // the piece as a s^3 + b s^2 + c s + d on s = (t - t0) / h in [0, 1]
+      const double h = t_[i + 1] - t_[i];
+      const double p0 = q_[i][j], p1 = q_[i + 1][j], m0 = qd_[i][j] * h, m1 = qd_[i + 1][j] * h;
+      const double a = 2 * (p0 - p1) + m0 + m1, b = 3 * (p1 - p0) - 2 * m0 - m1, c = m0;
+      const auto at = [&](double s) { return ((a * s + b) * s + c) * s + p0; };
+      const auto time = [&](double s) { return t_[i] + s * h; };
+      position(p1, t_[i + 1]);
+      speed(qd_[i][j], t_[i]);
+      speed(qd_[i + 1][j], t_[i + 1]);
+      acceleration(2 * b / (h * h), t_[i]);
+      acceleration((6 * a + 2 * b) / (h * h), t_[i + 1]);
+      // velocity 3a s^2 + 2b s + c: its extremum where the acceleration 6a s + 2b is zero
+      if (a != 0.0) {
+        const double s = -b / (3 * a);
+        if (s > 0.0 && s < 1.0) speed(((3 * a * s) + 2 * b) * s / h + c / h, time(s));
+      }
+      // position extrema where the velocity is zero
+      const double disc = 4 * b * b - 12 * a * c;
+      if (a == 0.0) {
+        if (b != 0.0) {
+          const double s = -c / (2 * b);
+          if (s > 0.0 && s < 1.0) position(at(s), time(s));
+        }
+      } else if (disc >= 0.0) {
+        for (const double sign : {-1.0, 1.0}) {
+          const double s = (-2 * b + sign * std::sqrt(disc)) / (6 * a);
+          if (s > 0.0 && s < 1.0) position(at(s), time(s));
+        }
+      }
+    }
+  }
+  return peaks;
+}
+
 }  // namespace dashbed::core

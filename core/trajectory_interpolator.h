@@ -20,6 +20,14 @@ struct JointReference {
   Vector6 qdd{};
 };
 
+/// The extremes of one joint along a whole curve, each with the time it is reached [s].
+struct JointPeaks {
+  double q_min = 0.0, t_q_min = 0.0;  ///< lowest position [rad]
+  double q_max = 0.0, t_q_max = 0.0;  ///< highest position [rad]
+  double speed = 0.0, t_speed = 0.0;  ///< largest |velocity| [rad/s]
+  double acceleration = 0.0, t_acceleration = 0.0;  ///< largest |acceleration| [rad/s^2]
+};
+
 class TrajectoryInterpolator {
  public:
   /// Precondition: points.size() >= 1 with strictly increasing t (the plan loader checks this).
@@ -29,6 +37,11 @@ class TrajectoryInterpolator {
   JointReference at(double t) const;
   /// at(t).q alone (the same numbers), without the derivatives.
   Vector6 position(double t) const;
+
+  /// Per joint, the exact extremes of position, velocity and acceleration along the curve
+  /// (on each cubic piece: position at its ends and where the velocity is zero, velocity at its
+  /// ends and where the acceleration is zero, acceleration at its ends).
+  std::array<JointPeaks, 6> peaks() const;
 
   double startTime() const { return t_.front(); }
   double endTime() const { return t_.back(); }

@@ -27,5 +27,6 @@ void addBenchCommand(CLI::App& app);
 void addGraphCommand(CLI::App& app);
 void addStressCommand(CLI::App& app);
 void addPlanCommand(CLI::App& app);
+void addCheckCommand(CLI::App& app);
 
 }  // namespace dashbed::tools

@@ -18,6 +18,7 @@ int main(int argc, char** argv) {
   addGenCommand(app);
   addKinCommand(app);
   addScriptCommand(app);
+  addCheckCommand(app);
   addSimCommand(app);
   addRenderCommand(app);
   addBenchCommand(app);
