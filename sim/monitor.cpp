@@ -516,6 +516,24 @@ struct Monitor::State {
     return outside <= 0.0;
   }
 
+  /// The largest slip of `hold` from its grasp to `until` against the slip tolerances; `who`
+  /// names the holder in the measurements and messages ("" in a pick, "receiver" in a handoff).
+  void judgeSlip(const HoldEpisode& hold, double until, const std::string& who, ActionReport& r,
+                 std::vector<std::string>& failures) const {
+    const core::CheckSettings& checks = world.checks;
+    const auto [slip, angle] = hold.maxSlip(hold.grasp_time, until);
+    const std::string key = who.empty() ? "slip" : who + "_slip";
+    const std::string words = who.empty() ? "slip" : who + " slip";
+    r.measurements.push_back(measure(key, slip, "m", checks.slip_tolerance, "<="));
+    r.measurements.push_back(measure(key + "_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
+    if (slip > checks.slip_tolerance) {
+      failures.push_back(words + " " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+    }
+    if (angle > checks.slip_angle_tolerance) {
+      failures.push_back(words + " angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+    }
+  }
+
   /// Pick: both pads on the object after the close command; at the pick's end held, off its
   /// support, lifted by the lift clearance, and within the slip tolerances while lifting.
   void judgePick(const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) const {
@@ -545,15 +563,7 @@ struct Monitor::State {
     }
     if (hold != nullptr) {
       // slip while lifting; later slip is judged by the action then in progress
-      const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
-      r.measurements.push_back(measure("slip", slip, "m", checks.slip_tolerance, "<="));
-      r.measurements.push_back(measure("slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
-      if (slip > checks.slip_tolerance) {
-        failures.push_back("slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
-      }
-      if (angle > checks.slip_angle_tolerance) {
-        failures.push_back("slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
-      }
+      judgeSlip(*hold, action.end, "", r, failures);
       if (a.held_at_end && !a.support_contact_at_end) r.observed_end = action.end;
     }
   }
@@ -562,7 +572,6 @@ struct Monitor::State {
   /// opens; then the receiver holds it within the slip tolerances, the giver no longer touches it,
   /// and nothing but the two grippers touched it meanwhile.
   void judgeHandoff(const ActionTrack& a, ActionReport& r, std::vector<std::string>& failures) const {
-    const core::CheckSettings& checks = world.checks;
     const core::PlanAction& action = *a.action;
     const std::string& object = action.object;
     if (!a.command_time || !a.command2_time || *a.command2_time <= *a.command_time) {
@@ -584,15 +593,7 @@ struct Monitor::State {
     const HoldEpisode* hold = episodeOf(a.receiver, a.object, action.start, action.end);
     if (hold != nullptr) {
       r.observed_start = hold->grasp_time;
-      const auto [slip, angle] = hold->maxSlip(hold->grasp_time, action.end);
-      r.measurements.push_back(measure("receiver_slip", slip, "m", checks.slip_tolerance, "<="));
-      r.measurements.push_back(measure("receiver_slip_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
-      if (slip > checks.slip_tolerance) {
-        failures.push_back("receiver slip " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
-      }
-      if (angle > checks.slip_angle_tolerance) {
-        failures.push_back("receiver slip angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
-      }
+      judgeSlip(*hold, action.end, "receiver", r, failures);
     }
     if (a.held_at_end) r.observed_end = *a.command2_time;
   }
