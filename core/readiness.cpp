@@ -58,7 +58,9 @@ void checkCurve(const RobotTrajectory& trajectory, const RobotModel& model, cons
   ReadinessCheck speed{"joint speed", trajectory.robot, 0.0, 0.0, "rad/s", 0.0, true, ""};
   ReadinessCheck acceleration{"joint acceleration", trajectory.robot, 0.0, limits.max_acceleration, "rad/s^2", 0.0,
                               true, ""};
-  double worst_position = -1.0, worst_speed = -1.0, worst_acceleration = -1.0;  // as fractions of the limit
+  // the worst joint of each: position by how far beyond its limits [rad], the others as fractions of
+  // their limits
+  double worst_position = -std::numeric_limits<double>::infinity(), worst_speed = -1.0, worst_acceleration = -1.0;
   for (int j = 0; j < 6; ++j) {
     const JointModel& joint = model.joints()[model.movableJoints()[j]];
     const JointPeaks& p = peaks[j];

@@ -139,6 +139,11 @@ TEST_CASE("readiness judges the curve, not the points: a peak between points fai
   CHECK(fine.ready());
   CHECK(named(fine, "joint speed").value == Approx(0.75));
   CHECK(named(fine, "joint acceleration").value == Approx(1.5));
+  // the position check names the joint that came nearest its limits, with its extreme
+  const ReadinessCheck& position = named(fine, "joint position");
+  CHECK_THAT(position.subject, Catch::Matchers::StartsWith("r0 "));
+  CHECK(std::abs(position.value) <= std::abs(position.limit));
+  CHECK(std::abs(position.limit) > 3.0);
   // holding still at home takes the shoulder-lift torque against gravity, well within 150 Nm
   const ReadinessCheck& effort = named(fine, "joint effort");
   CHECK(effort.passed);
