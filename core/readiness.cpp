@@ -49,6 +49,22 @@ double gripperMass(const RobotModel& model) {
   return mass;
 }
 
+/// Makes `check` the joint's when `value` is a larger fraction of its `limit` than `worst`, the
+/// largest so far: "SUBJECT VERB VALUE UNIT at T s on the plan's curve, above LIMIT_WORDS ...".
+void keepWorst(ReadinessCheck& check, double& worst, const std::string& subject, double value, double limit, double t,
+               const char* verb, const char* limit_words) {
+  if (value / limit <= worst) return;
+  worst = value / limit;
+  check.subject = subject;
+  check.value = value;
+  check.limit = limit;
+  check.t = t;
+  check.passed = value <= limit * (1.0 + kSlack);
+  check.detail = check.passed ? "" : subject + " " + verb + " " + text(value) + " " + check.unit + " at " + text(t) +
+                                         " s on the plan's curve, above " + limit_words + " " + text(limit) + " " +
+                                         check.unit;
+}
+
 /// Joint position, speed and acceleration of one robot's trajectory, the worst joint of each.
 void checkCurve(const RobotTrajectory& trajectory, const RobotModel& model, const ReadinessLimits& limits,
                 std::vector<ReadinessCheck>& checks) {
@@ -80,29 +96,9 @@ void checkCurve(const RobotTrajectory& trajectory, const RobotModel& model, cons
                                                    text(position.t) + " s, beyond its limit " +
                                                    text(position.limit) + " rad";
     }
-    if (p.speed / joint.max_velocity > worst_speed) {
-      worst_speed = p.speed / joint.max_velocity;
-      speed.subject = subject;
-      speed.value = p.speed;
-      speed.limit = joint.max_velocity;
-      speed.t = p.t_speed;
-      speed.passed = p.speed <= joint.max_velocity * (1.0 + kSlack);
-      speed.detail = speed.passed ? "" : subject + " moves at " + text(p.speed) + " rad/s at " + text(p.t_speed) +
-                                             " s on the plan's curve, above its limit " +
-                                             text(joint.max_velocity) + " rad/s";
-    }
-    if (p.acceleration / limits.max_acceleration > worst_acceleration) {
-      worst_acceleration = p.acceleration / limits.max_acceleration;
-      acceleration.subject = subject;
-      acceleration.value = p.acceleration;
-      acceleration.t = p.t_acceleration;
-      acceleration.passed = p.acceleration <= limits.max_acceleration * (1.0 + kSlack);
-      acceleration.detail = acceleration.passed
-                                ? ""
-                                : subject + " accelerates at " + text(p.acceleration) + " rad/s^2 at " +
-                                      text(p.t_acceleration) + " s on the plan's curve, above the limit " +
-                                      text(limits.max_acceleration) + " rad/s^2";
-    }
+    keepWorst(speed, worst_speed, subject, p.speed, joint.max_velocity, p.t_speed, "moves at", "its limit");
+    keepWorst(acceleration, worst_acceleration, subject, p.acceleration, limits.max_acceleration, p.t_acceleration,
+              "accelerates at", "the limit");
   }
   checks.push_back(position);
   checks.push_back(speed);
@@ -160,6 +156,7 @@ void checkEfforts(const Plan& plan, const World& world, const RobotTrajectory& t
   const TrajectoryInterpolator curve(trajectory.points);
   const std::vector<Hold> holds = holdsOf(plan, world, trajectory.robot);
   const Eigen::Vector3d gravity_R = robot.spec->X_WBase.linear().transpose() * world.physics.gravity;
+  const int tcp = model.requireLink("tcp");
   const int n = model.numPositions();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(n), qd = Eigen::VectorXd::Zero(n), qdd = Eigen::VectorXd::Zero(n);
   for (int i = 6; i < n; ++i) q[i] = model.joints()[model.movableJoints()[i]].upper;
@@ -175,7 +172,7 @@ void checkEfforts(const Plan& plan, const World& world, const RobotTrajectory& t
     const Payload* carried = nullptr;
     for (const Hold& h : holds) {
       if (t >= h.from && t < h.to) {
-        payload.link = model.requireLink("tcp");
+        payload.link = tcp;
         payload.mass = h.object->mass;
         carried = &payload;
       }

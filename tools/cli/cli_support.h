@@ -8,6 +8,7 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include "core/asset_paths.h"
 #include "core/world_io.h"
 #include "tools/cli/commands.h"
 
@@ -35,6 +36,11 @@ void runGuarded(const char* what, F&& f) {
 /// or object name) replaced instead of thrown on.
 inline std::string jsonText(const nlohmann::json& json) {
   return json.dump(2, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+/// The world file a command was given, or worlds/default.yaml when none.
+inline std::filesystem::path worldFileOrDefault(const std::string& file) {
+  return file.empty() ? core::defaultWorldPath() : std::filesystem::path(file);
 }
 
 }  // namespace dashbed::tools

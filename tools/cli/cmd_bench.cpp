@@ -43,8 +43,7 @@ void report(const BenchTable& table, const std::string& record, const CLI::App& 
 }
 
 BenchTable benchRender(const std::string& world_file, int frames) {
-  const core::LoadedWorld loaded =
-      core::loadWorld(world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(world_file));
+  const core::LoadedWorld loaded = core::loadWorld(worldFileOrDefault(world_file));
   BenchTable table;
   table.note = "Offscreen rendering (OSMesa), world " + loaded.world->name + ", oblique camera, " +
                std::to_string(frames) + " frames each, one thread.";

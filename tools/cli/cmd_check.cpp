@@ -22,8 +22,7 @@ struct CheckOptions {
 };
 
 void runCheck(const CheckOptions& options) {
-  const std::filesystem::path world_path =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const std::filesystem::path world_path = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(world_path);
   const core::Plan plan = core::loadPlanFile(options.plan_file);
   sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, options.plan_file);

@@ -119,8 +119,7 @@ void writeDotFile(const planner::TaskSpaceHypergraph& graph, const std::string& 
 }
 
 void runWorld(const GraphOptions& options) {
-  const std::filesystem::path file =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const std::filesystem::path file = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(file);
   const core::World& world = *loaded.world;
   // the planner's: place hyperarcs for the robots reaching each object's goal slot

@@ -27,8 +27,7 @@ void writeText(const std::string& file, const std::string& text) {
 }
 
 void planJob(const PlanOptions& options) {
-  const std::filesystem::path file =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const std::filesystem::path file = worldFileOrDefault(options.world_file);
   const core::LoadedWorld world = core::loadWorld(file);
   const planner::PlanResult result = planWorld(world, options.choice);
   if (result.plan && !options.output.empty()) writeText(options.output, core::writePlanJson(*result.plan));

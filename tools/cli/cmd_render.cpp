@@ -19,8 +19,7 @@ struct RenderOptions {
 
 void runRender(const RenderOptions& options) {
   if (!options.outputs.recording.wanted()) throw CLI::ValidationError("render", "give --out DIR and/or --video FILE");
-  const std::filesystem::path world_path =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const std::filesystem::path world_path = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(world_path);
   const core::Plan plan = core::loadPlanFile(options.plan_file);
   const sim::RecordedRun run = sim::checkPlan(*loaded.world, *loaded.robots, plan, options.plan_file, options.outputs);

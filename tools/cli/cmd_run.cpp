@@ -158,8 +158,7 @@ void planAndSimulate(const core::LoadedWorld& loaded, const RunOptions& options,
 }
 
 void runJob(const RunOptions& options) {
-  const std::filesystem::path file =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const std::filesystem::path file = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(file);
   // the home check is the planner's, in the scene it plans in: built and checked once
   auto scene = planner::checkedScene(loaded, plannerSettings(options.choice));

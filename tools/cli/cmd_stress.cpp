@@ -76,8 +76,7 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
   const int cores = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const int threads = options.threads > 0 ? options.threads : std::max(1, cores / group.localSize());
 
-  const std::filesystem::path world_path =
-      options.world_file.empty() ? core::defaultWorldPath() : std::filesystem::path(options.world_file);
+  const std::filesystem::path world_path = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(world_path);
   CampaignInfo info{loaded.world->name, world_path.string(), "", settings,
                     options.min_success >= 0.0 ? std::optional<double>(options.min_success) : std::nullopt};
