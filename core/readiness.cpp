@@ -7,6 +7,7 @@
 #include "core/dynamics.h"
 #include "core/grasps.h"
 #include "core/hande.h"
+#include "core/kinematics.h"
 #include "core/number_text.h"
 #include "core/trajectory_interpolator.h"
 
@@ -66,14 +67,14 @@ void keepWorst(ReadinessCheck& check, double& worst, const std::string& subject,
 }
 
 /// Joint position, speed and acceleration of one robot's trajectory, the worst joint of each.
-void checkCurve(const RobotTrajectory& trajectory, const RobotModel& model, const ReadinessLimits& limits,
+void checkCurve(const RobotTrajectory& trajectory, const RobotModel& model, const SafetySettings& safety,
                 std::vector<ReadinessCheck>& checks) {
   if (trajectory.points.empty()) return;
   const std::array<JointPeaks, 6> peaks = TrajectoryInterpolator(trajectory.points).peaks();
   ReadinessCheck position{"joint position", trajectory.robot, 0.0, 0.0, "rad", 0.0, true, ""};
   ReadinessCheck speed{"joint speed", trajectory.robot, 0.0, 0.0, "rad/s", 0.0, true, ""};
-  ReadinessCheck acceleration{"joint acceleration", trajectory.robot, 0.0, limits.max_acceleration, "rad/s^2", 0.0,
-                              true, ""};
+  ReadinessCheck acceleration{"joint acceleration", trajectory.robot, 0.0, safety.max_joint_acceleration, "rad/s^2",
+                              0.0, true, ""};
   // the worst joint of each: position by how far beyond its limits [rad], the others as fractions of
   // their limits
   double worst_position = -std::numeric_limits<double>::infinity(), worst_speed = -1.0, worst_acceleration = -1.0;
@@ -97,8 +98,8 @@ void checkCurve(const RobotTrajectory& trajectory, const RobotModel& model, cons
                                                    text(position.limit) + " rad";
     }
     keepWorst(speed, worst_speed, subject, p.speed, joint.max_velocity, p.t_speed, "moves at", "its limit");
-    keepWorst(acceleration, worst_acceleration, subject, p.acceleration, limits.max_acceleration, p.t_acceleration,
-              "accelerates at", "the limit");
+    keepWorst(acceleration, worst_acceleration, subject, p.acceleration, safety.max_joint_acceleration,
+              p.t_acceleration, "accelerates at", "the limit");
   }
   checks.push_back(position);
   checks.push_back(speed);
@@ -147,10 +148,11 @@ std::vector<Hold> holdsOf(const Plan& plan, const World& world, const std::strin
   return holds;
 }
 
-/// The joint efforts the curve needs (inverse dynamics, every simulation step, the held object
-/// a point mass at the TCP) against the model's effort limits: the worst joint.
-void checkEfforts(const Plan& plan, const World& world, const RobotTrajectory& trajectory, const PlacedRobot& robot,
-                  std::vector<ReadinessCheck>& checks) {
+/// Along the curve at every simulation step: the joint efforts it needs (inverse dynamics, the
+/// held object a point mass at the TCP) against the model's effort limits, the worst joint; and
+/// the TCP's speed against the safety limit.
+void checkDynamics(const Plan& plan, const World& world, const RobotTrajectory& trajectory, const PlacedRobot& robot,
+                   std::vector<ReadinessCheck>& checks) {
   if (trajectory.points.empty()) return;
   const RobotModel& model = *robot.model;
   const TrajectoryInterpolator curve(trajectory.points);
@@ -160,7 +162,8 @@ void checkEfforts(const Plan& plan, const World& world, const RobotTrajectory& t
   const int n = model.numPositions();
   Eigen::VectorXd q = Eigen::VectorXd::Zero(n), qd = Eigen::VectorXd::Zero(n), qdd = Eigen::VectorXd::Zero(n);
   for (int i = 6; i < n; ++i) q[i] = model.joints()[model.movableJoints()[i]].upper;
-  ReadinessCheck check{"joint effort", trajectory.robot, 0.0, 0.0, "Nm", 0.0, true, ""};
+  ReadinessCheck effort{"joint effort", trajectory.robot, 0.0, 0.0, "Nm", 0.0, true, ""};
+  ReadinessCheck tcp_speed{"tcp speed", trajectory.robot, 0.0, world.safety.tcp_speed, "m/s", 0.0, true, ""};
   double worst = -1.0;
   const double step = world.physics.time_step;
   const auto steps = static_cast<long>(std::ceil((curve.endTime() - curve.startTime()) / step));
@@ -183,18 +186,26 @@ void checkEfforts(const Plan& plan, const World& world, const RobotTrajectory& t
       const double ratio = std::abs(tau[j]) / joint.max_effort;
       if (ratio <= worst) continue;
       worst = ratio;
-      check.subject = trajectory.robot + " " + joint.name;
-      check.value = std::abs(tau[j]);
-      check.limit = joint.max_effort;
-      check.t = t;
+      effort.subject = trajectory.robot + " " + joint.name;
+      effort.value = std::abs(tau[j]);
+      effort.limit = joint.max_effort;
+      effort.t = t;
     }
+    const double speed = (jacobian(model, q, tcp).topRows<3>() * qd).norm();
+    if (speed > tcp_speed.value) tcp_speed.value = speed, tcp_speed.t = t;
   }
-  check.passed = check.value <= check.limit;
-  if (!check.passed) {
-    check.detail = check.subject + " needs " + text(check.value) + " Nm at " + text(check.t) +
-                   " s to follow the plan's curve, above its limit " + text(check.limit) + " Nm";
+  effort.passed = effort.value <= effort.limit;
+  if (!effort.passed) {
+    effort.detail = effort.subject + " needs " + text(effort.value) + " Nm at " + text(effort.t) +
+                    " s to follow the plan's curve, above its limit " + text(effort.limit) + " Nm";
   }
-  checks.push_back(check);
+  checks.push_back(effort);
+  tcp_speed.passed = tcp_speed.value <= tcp_speed.limit * (1.0 + kSlack);
+  if (!tcp_speed.passed) {
+    tcp_speed.detail = trajectory.robot + "'s TCP moves at " + text(tcp_speed.value) + " m/s at " + text(tcp_speed.t) +
+                       " s on the plan's curve, above the safety limit " + text(tcp_speed.limit) + " m/s";
+  }
+  checks.push_back(tcp_speed);
 }
 
 }  // namespace
@@ -211,13 +222,12 @@ std::string ReadinessReport::failures() const {
   return text;
 }
 
-ReadinessReport checkReadiness(const Plan& plan, const World& world, const RobotSet& robots,
-                               const ReadinessLimits& limits) {
+ReadinessReport checkReadiness(const Plan& plan, const World& world, const RobotSet& robots) {
   ReadinessReport report;
   for (const RobotTrajectory& trajectory : plan.trajectories) {
     if (const PlacedRobot* robot = robotNamed(world, robots, trajectory.robot)) {
-      checkCurve(trajectory, *robot->model, limits, report.checks);
-      checkEfforts(plan, world, trajectory, *robot, report.checks);
+      checkCurve(trajectory, *robot->model, world.safety, report.checks);
+      checkDynamics(plan, world, trajectory, *robot, report.checks);
     }
   }
   // gripper commands: a force of 0 means the world's grip force, anything else must be one the
@@ -244,10 +254,11 @@ ReadinessReport checkReadiness(const Plan& plan, const World& world, const Robot
     if (robot == nullptr || object == nullptr) continue;
     const std::string subject = holder + " holding " + object->name;
     const double carried = gripperMass(*robot->model) + object->mass;
-    ReadinessCheck payload{"payload", subject, carried, limits.payload, "kg", action.start, carried <= limits.payload, ""};
+    const double rated = world.safety.payload;
+    ReadinessCheck payload{"payload", subject, carried, rated, "kg", action.start, carried <= rated, ""};
     if (!payload.passed) {
       payload.detail = subject + " carries " + text(carried) + " kg with the gripper, above the UR5e's rated " +
-                       text(limits.payload) + " kg";
+                       text(rated) + " kg";
     }
     report.checks.push_back(payload);
     const double force = gripForce(plan, world, holder, action.start, action.end);

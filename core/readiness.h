@@ -3,9 +3,10 @@
 // on the curve the plan means (core::TrajectoryInterpolator, the one the simulator tracks and an
 // export sends), not on its points alone:
 //  - joint positions within the robot model's limits, joint speeds within its velocity limits
-//    (UR5e: 180 deg/s, UR's datasheet) and joint accelerations within max_acceleration, at the
+//    (UR5e: 180 deg/s, UR's datasheet) and joint accelerations within the world's safety limit, at the
 //    exact extremes of every cubic piece; the joint efforts that curve needs (inverse dynamics
-//    at every simulation step, a held object at the TCP) within the model's effort limits;
+//    at every simulation step, a held object at the TCP) within the model's effort limits, and
+//    the TCP's speed there within the safety configuration's;
 //  - gripper commands within the Hand-E's force range (core/hande.h): out of range is refused,
 //    never clamped;
 //  - payload: every object a robot picks or receives, plus the gripper, within the UR5e's rated
@@ -21,19 +22,9 @@
 
 namespace dashbed::core {
 
-/// Limits beyond the robot model's own.
-struct ReadinessLimits {
-  /// Joint acceleration limit [rad/s^2]. The UR5e has no acceleration limit of its own, only
-  /// torque limits; 5 rad/s^2 is what UR's ROS 2 driver configures for MoveIt's time
-  /// parameterisation (Universal_Robots_ROS2_Driver, ur_moveit_config/config/joint_limits.yaml).
-  double max_acceleration = 5.0;
-  /// Rated payload at the flange, gripper included [kg] (UR5e datasheet and hardware manual: 5 kg).
-  double payload = 5.0;
-};
-
 /// One check of the readiness report: the measured value against its limit.
 struct ReadinessCheck {
-  std::string name;     ///< "joint position", "joint speed", "joint acceleration", "joint effort", "gripper force", "payload", "grip"
+  std::string name;     ///< "joint position", "joint speed", "joint acceleration", "joint effort", "tcp speed", "gripper force", "payload", "grip"
   std::string subject;  ///< what it is about: "r0 wrist_3_joint", "gripper command 3 (r1 close at 12.5 s)", "r1 holding cube_2"
   double value = 0.0;   ///< the measured extreme
   double limit = 0.0;
@@ -50,8 +41,8 @@ struct ReadinessReport {
   std::string failures() const;
 };
 
-/// Judges `plan` (which must have passed core::validatePlan for the world) on `world`'s robots.
-ReadinessReport checkReadiness(const Plan& plan, const World& world, const RobotSet& robots,
-                               const ReadinessLimits& limits = {});
+/// Judges `plan` (which must have passed core::validatePlan for the world) on `world`'s robots,
+/// within the robot model's limits and the world's safety settings.
+ReadinessReport checkReadiness(const Plan& plan, const World& world, const RobotSet& robots);
 
 }  // namespace dashbed::core

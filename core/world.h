@@ -150,6 +150,20 @@ struct CheckSettings {
   bool operator==(const CheckSettings&) const = default;
 };
 
+/// The hardware limits a plan is held to before it is simulated (world file section `safety`;
+/// core/readiness.h). The joint position, speed and effort limits are the robot model's own.
+struct SafetySettings {
+  /// Joint acceleration limit [rad/s^2]. The UR5e has none of its own, only torque limits; 5 is
+  /// what UR's ROS 2 driver configures for MoveIt's time parameterisation
+  /// (Universal_Robots_ROS2_Driver, ur_moveit_config/config/joint_limits.yaml).
+  double max_joint_acceleration = 5.0;
+  /// Rated payload at the flange, gripper included [kg] (UR5e hardware manual: 5 kg).
+  double payload = 5.0;
+  /// TCP speed limit of the robot's safety configuration [m/s] (see docs/limits.md).
+  double tcp_speed = 1.5;
+  bool operator==(const SafetySettings&) const = default;
+};
+
 /// The current world-file format version.
 inline constexpr int kWorldFormatVersion = 1;
 
@@ -174,6 +188,7 @@ struct World {
   PhysicsSettings physics;
   ControllerSettings controller;
   CheckSettings checks;
+  SafetySettings safety;
   std::string source_file;  ///< file it was loaded from ("" when generated)
 
   const RobotSpec* findRobot(std::string_view name) const;

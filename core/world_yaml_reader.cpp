@@ -234,6 +234,7 @@ class Reader {
   void physics(const Field& field, PhysicsSettings& settings) const;
   void controller(const Field& field, ControllerSettings& settings) const;
   void checks(const Field& field, CheckSettings& settings) const;
+  void safety(const Field& field, SafetySettings& settings) const;
 
   std::string name(const MapView& map);
 
@@ -674,6 +675,14 @@ void Reader::checks(const Field& field, CheckSettings& settings) const {
   if (const auto f = map.get("settle_time")) settings.settle_time = within(*f, 0.0, kMaxSettleTime, " s");
 }
 
+void Reader::safety(const Field& field, SafetySettings& settings) const {
+  const MapView map(*this, field);
+  map.allowOnly({"max_joint_acceleration", "payload", "tcp_speed"});
+  if (const auto f = map.get("max_joint_acceleration")) settings.max_joint_acceleration = positive(*f);
+  if (const auto f = map.get("payload")) settings.payload = positive(*f);
+  if (const auto f = map.get("tcp_speed")) settings.tcp_speed = positive(*f);
+}
+
 // ---- the world ----------------------------------------------------------------------------
 
 World Reader::read(const YAML::Node& root) {
@@ -694,7 +703,7 @@ World Reader::read(const YAML::Node& root) {
                       "; this dashbed reads version " + std::to_string(kWorldFormatVersion));
   }
   map.allowOnly({"dashbed_world", "name", "description", "robots", "fixtures", "surfaces",
-                 "regions", "objects", "goals", "physics", "controller", "checks"});
+                 "regions", "objects", "goals", "physics", "controller", "checks", "safety"});
 
   World world;
   world.name = identifier(map.require("name"));
@@ -725,6 +734,7 @@ World Reader::read(const YAML::Node& root) {
   if (const auto f = map.get("physics")) physics(*f, world.physics);
   if (const auto f = map.get("controller")) controller(*f, world.controller);
   if (const auto f = map.get("checks")) checks(*f, world.checks);
+  if (const auto f = map.get("safety")) safety(*f, world.safety);
 
   deriveFixtureGeometry(world);
   checkGoals(world);

@@ -258,6 +258,12 @@ std::string writeWorldYaml(const World& world) {
   line("  rest_speed: " + formatNumber(checks.rest_speed));
   line("  settle_time: " + formatNumber(checks.settle_time));
   line("  tracking_error_limit: " + formatNumber(checks.tracking_error_limit));
+
+  const SafetySettings& safety = world.safety;
+  line("safety:");
+  line("  max_joint_acceleration: " + formatNumber(safety.max_joint_acceleration));
+  line("  payload: " + formatNumber(safety.payload));
+  line("  tcp_speed: " + formatNumber(safety.tcp_speed));
   return out;
 }
 

@@ -56,7 +56,7 @@ core::Plan writePlan(const MotionHypergraph& graph, const TransitionHistory& his
       const Millis start = schedule.start[s];
       append(trajectory, start, q, at_rest);  // standing still until now
       if (seg.move != nullptr) {
-        for (const TimedSample& sample : timePolyline(seg.move->path, graph.timing(), kMoveSampleStep)) {
+        for (const TimedSample& sample : timePolyline(seg.move->path, graph.timing(), kMoveSampleStep, seg.move->speed_scale)) {
           append(trajectory, start + sample.t, sample.q, sample.qd);
         }
         q = seg.move->path.back();

@@ -215,6 +215,22 @@ Report readReport(const ReportReader& reader, const Json& document) {
   }
 
   if (document.contains("final_still")) report.final_still = reader.string(document, "", "final_still");
+  if (document.contains("readiness")) {
+    const Json& readiness = reader.array(document, "", "readiness");
+    for (std::size_t i = 0; i < readiness.size(); ++i) {
+      const std::string pointer = pointerAt("/readiness", i);
+      core::ReadinessCheck check;
+      check.name = reader.string(readiness[i], pointer, "name");
+      check.subject = reader.string(readiness[i], pointer, "subject");
+      check.value = numberOrNaN(reader, readiness[i], pointer, "value");
+      check.limit = numberOrNaN(reader, readiness[i], pointer, "limit");
+      check.unit = reader.string(readiness[i], pointer, "unit");
+      check.t = numberOrNaN(reader, readiness[i], pointer, "t");
+      check.passed = reader.boolean(readiness[i], pointer, "passed");
+      check.detail = reader.string(readiness[i], pointer, "detail");
+      report.readiness.push_back(std::move(check));
+    }
+  }
 
   // the summary: the execution verdict lives there; the counts must agree with the actions
   const Json& summary = reader.required(document, "", "summary");
@@ -233,7 +249,7 @@ Report readReport(const ReportReader& reader, const Json& document) {
   }
   if (verdict(reader, summary, "/summary", "verdict") !=
       (report.passed() ? Verdict::kPassed : Verdict::kFailed)) {
-    reader.fail("/summary/verdict", "disagrees with the actions and the execution verdict");
+    reader.fail("/summary/verdict", "disagrees with the actions, the execution verdict and the readiness checks");
   }
   return report;
 }
@@ -386,7 +402,11 @@ int Report::passedCount() const {
 
 int Report::failedCount() const { return static_cast<int>(actions.size()) - passedCount(); }
 
-bool Report::passed() const { return failedCount() == 0 && execution_verdict == Verdict::kPassed; }
+bool Report::ready() const {
+  return std::all_of(readiness.begin(), readiness.end(), [](const core::ReadinessCheck& c) { return c.passed; });
+}
+
+bool Report::passed() const { return failedCount() == 0 && execution_verdict == Verdict::kPassed && ready(); }
 
 std::string writeReportJson(const Report& report) {
   OrderedJson document;
@@ -403,6 +423,7 @@ std::string writeReportJson(const Report& report) {
   summary["failed"] = report.failedCount();
   summary["execution"] = toString(report.execution_verdict);
   summary["execution_failure"] = report.execution_failure;
+  summary["readiness"] = toString(report.ready() ? Verdict::kPassed : Verdict::kFailed);
   summary["verdict"] = toString(report.passed() ? Verdict::kPassed : Verdict::kFailed);
   document["summary"] = std::move(summary);
 
@@ -434,6 +455,21 @@ std::string writeReportJson(const Report& report) {
   }
   document["robots"] = std::move(robots);
   document["final_still"] = report.final_still;
+
+  OrderedJson readiness = OrderedJson::array();
+  for (const core::ReadinessCheck& check : report.readiness) {
+    OrderedJson json;
+    json["name"] = check.name;
+    json["subject"] = check.subject;
+    json["value"] = number(check.value);
+    json["limit"] = number(check.limit);
+    json["unit"] = check.unit;
+    json["t"] = number(check.t);
+    json["passed"] = check.passed;
+    json["detail"] = check.detail;
+    readiness.push_back(std::move(json));
+  }
+  document["readiness"] = std::move(readiness);
   return core::formatJson(document);
 }
 
@@ -447,9 +483,10 @@ Report loadReportFile(const std::filesystem::path& file) {
 }
 
 std::string writeJUnitXml(const Report& report) {
-  const int tests = static_cast<int>(report.actions.size()) + 1;  // + the execution check
-  const int failures =
-      report.failedCount() + (report.execution_verdict == Verdict::kFailed ? 1 : 0);
+  const int tests = static_cast<int>(report.actions.size() + 1 + report.readiness.size());  // + the execution check
+  const int failures = report.failedCount() + (report.execution_verdict == Verdict::kFailed ? 1 : 0) +
+                       static_cast<int>(std::count_if(report.readiness.begin(), report.readiness.end(),
+                                                      [](const core::ReadinessCheck& c) { return !c.passed; }));
   const std::string suite_name = "dashbed: " + report.world + " / " + report.plan_file;
 
   std::string out = "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n";
@@ -489,6 +526,13 @@ std::string writeJUnitXml(const Report& report) {
   if (message.empty()) message = std::to_string(report.events.size()) + " execution events";
   writeTestcase(out, "dashbed.execution", "execution", report.simulated_time, failed, message,
                 "execution", details);
+
+  for (const core::ReadinessCheck& check : report.readiness) {
+    const std::string measured = sixDigits(check.value) + " " + check.unit + " (limit " + sixDigits(check.limit) + " " +
+                                 check.unit + ") at t=" + sixDigits(check.t) + " s\n";
+    writeTestcase(out, "dashbed.readiness", check.name + " " + check.subject, 0.0, !check.passed, check.detail,
+                  "readiness", measured);
+  }
 
   out += "  </testsuite>\n";
   out += "</testsuites>\n";

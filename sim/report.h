@@ -13,6 +13,7 @@
 #include <Eigen/Core>
 
 #include "core/plan.h"
+#include "core/readiness.h"
 
 namespace dashbed::sim {
 
@@ -82,10 +83,14 @@ struct Report {
   Verdict execution_verdict = Verdict::kPassed;  ///< unplanned contacts and tracking limits
   std::string execution_failure;
   std::string final_still;       ///< PNG of the final state ("" if none was rendered)
+  /// Hardware readiness of the plan (core/readiness.h): whether a UR5e with a Hand-E could run it
+  /// as written; empty when it was not checked.
+  std::vector<core::ReadinessCheck> readiness;
 
   int passedCount() const;
   int failedCount() const;
-  bool passed() const;  ///< every action passed and the execution check passed
+  bool ready() const;   ///< every readiness check passed
+  bool passed() const;  ///< every action, the execution check and every readiness check passed
 };
 
 /// The current report format version ("dashbed_report" in the JSON).
@@ -98,8 +103,9 @@ class ReportError : public std::runtime_error {
 };
 
 /// JSON report: {"dashbed_report": 1, "world", "plan", "seed", "time_step", "simulated_time",
-/// "summary": {"actions", "passed", "failed", "execution", "execution_failure", "verdict"},
-/// "actions": [...], "events": [...], "robots": [...]}. Deterministic bytes for equal reports;
+/// "summary": {"actions", "passed", "failed", "execution", "execution_failure", "readiness",
+/// "verdict"}, "actions": [...], "events": [...], "robots": [...], "readiness": [{"name",
+/// "subject", "value", "limit", "unit", "t", "passed", "detail"}, ...]}. Deterministic bytes for equal reports;
 /// numbers round-trip exactly; a non-finite number is written as null (read back as NaN, or
 /// as an absent threshold / observed time).
 std::string writeReportJson(const Report& report);
@@ -112,8 +118,9 @@ Report readReportJson(std::string_view json_text, const std::string& file_name);
 Report loadReportFile(const std::filesystem::path& file);
 
 /// JUnit XML: one <testsuite> "dashbed: WORLD / PLAN" with one <testcase> per action
-/// (classname "dashbed.<type>", name = the action's id, time = planned duration) plus one
-/// "execution" testcase; a failed case has <failure message="slip 0.012 m > 0.005 m"
+/// (classname "dashbed.<type>", name = the action's id, time = planned duration), one
+/// "execution" testcase, and one per readiness check (classname "dashbed.readiness", name
+/// "CHECK SUBJECT", a failure of type "readiness"); a failed case has <failure message="slip 0.012 m > 0.005 m"
 /// type="grasp|placement|handoff|execution"> whose text lists every measurement (execution:
 /// the events). Times with millisecond decimals, other numbers with six significant digits;
 /// deterministic bytes for equal reports.

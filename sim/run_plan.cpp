@@ -1,5 +1,7 @@
 #include "sim/run_plan.h"
 
+#include "core/readiness.h"
+
 #include "sim/monitor.h"
 #include "sim/plan_executor.h"
 
@@ -36,6 +38,7 @@ Report runPlan(const core::World& world, const core::RobotSet& robots, const cor
   }
   Report report = monitor.finish(executor);
   report.plan_file = plan_file;
+  report.readiness = core::checkReadiness(plan, world, robots).checks;
   return report;
 }
 

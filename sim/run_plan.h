@@ -27,7 +27,8 @@ void validatePlanForWorld(const core::Plan& plan, const core::World& world, cons
                           const std::string& plan_file);
 
 /// Builds a simulation of `world`, lets the objects settle for physics.settle_time with the
-/// robots holding still, executes the plan under the monitor and returns the report.
+/// robots holding still, executes the plan under the monitor and returns the report, with the
+/// plan's hardware readiness (core::checkReadiness) in it.
 Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                const std::string& plan_file, const RunOptions& options = {});
 

@@ -1,5 +1,7 @@
 #include "planner/motion/motion_hypergraph.h"
 
+#include "core/kinematics.h"
+
 #include <algorithm>
 #include <chrono>
 #include <random>
@@ -51,6 +53,8 @@ void RepresentationSettings::validate() const {
   require(move_growth_spread > 0.0, "move_growth_spread", "must be > 0");
   require(velocity_fraction > 0.0 && velocity_fraction <= 1.0, "velocity_fraction", "must be in (0, 1]");
   require(max_acceleration > 0.0, "max_acceleration", "must be positive");
+  require(tcp_speed_fraction > 0.0 && tcp_speed_fraction <= 1.0, "tcp_speed_fraction", "must be in (0, 1]");
+  transitions.validate();
   collision.validate();
 }
 
@@ -85,7 +89,7 @@ MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpa
   const core::RobotModel& model = *world.robots->robots().front().model;
   for (int j = 0; j < 6; ++j) {
     timing_.max_velocity[j] = settings_.velocity_fraction * model.joints()[model.movableJoints()[j]].max_velocity;
-    timing_.max_acceleration[j] = settings_.max_acceleration;
+    timing_.max_acceleration[j] = std::min(settings_.max_acceleration, world.world->safety.max_joint_acceleration);
   }
   grasps_.resize(world.world->objects.size());
   best_duration_.resize(task_space.numHyperarcs());
@@ -271,6 +275,41 @@ const Move* MotionHypergraph::move(int robot, int object, int grasp, const core:
   return moves_.emplace(key, std::move(result)).first->second.get();
 }
 
+TimingLimits MotionHypergraph::pieceTiming(const Move& move, std::size_t i) const {
+  return withSpeedScale(timing_, i < move.speed_scale.size() ? move.speed_scale[i] : 1.0);
+}
+
+std::vector<double> MotionHypergraph::tcpSpeedScales(const std::vector<core::ArmConfig>& path) const {
+  // every robot of a world is a UR5e: the first one's model stands for all. The rate is sampled
+  // every kRateStep of the largest joint change; the cap's margin to the limit covers what falls
+  // between samples.
+  constexpr double kRateStep = 0.02;  // [rad]
+  const core::RobotModel& model = *world_->robots->robots().front().model;
+  const int tcp = model.requireLink("tcp");
+  const double max_speed = settings_.tcp_speed_fraction * world_->world->safety.tcp_speed;
+  std::vector<double> scales;
+  Eigen::VectorXd q = Eigen::VectorXd::Zero(model.numPositions());
+  Eigen::VectorXd delta = Eigen::VectorXd::Zero(model.numPositions());
+  for (std::size_t i = 1; i < path.size(); ++i) {
+    const core::ArmConfig& a = path[i - 1];
+    const core::ArmConfig& b = path[i];
+    double largest = 0.0;
+    for (int j = 0; j < 6; ++j) {
+      delta[j] = b[j] - a[j];
+      largest = std::max(largest, std::abs(delta[j]));
+    }
+    const int samples = std::max(2, static_cast<int>(std::ceil(largest / kRateStep)) + 1);
+    double rate = 0.0;  // [m per unit of path]
+    for (int k = 0; k < samples; ++k) {
+      const double s = static_cast<double>(k) / (samples - 1);
+      for (int j = 0; j < 6; ++j) q[j] = a[j] + s * delta[j];
+      rate = std::max(rate, (core::jacobian(model, q, tcp).topRows<3>() * delta).norm());
+    }
+    scales.push_back(speedScaleWithin(a, b, timing_, rate, max_speed));
+  }
+  return scales;
+}
+
 Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<core::ArmConfig> path,
                                 const SiteSet& occupied) {
   Roadmap& map = roadmap(robot, object, grasp);
@@ -278,7 +317,8 @@ Move MotionHypergraph::makeMove(int robot, int object, int grasp, std::vector<co
   m.robot = robot;
   m.object = object;
   m.grasp = grasp;
-  m.duration = polylineDuration(path, timing_);
+  m.speed_scale = tcpSpeedScales(path);
+  m.duration = polylineDuration(path, timing_, m.speed_scale);
   m.occupied = occupied;
   // which unoccupied sites the path touches: the schedule keeps their objects away meanwhile.
   // Each piece's sites come from the roadmap's cached check of that motion.

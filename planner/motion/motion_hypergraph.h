@@ -74,8 +74,12 @@ struct RepresentationSettings {
   /// Move speed cap, fraction of each joint's velocity limit, in (0, 1]; higher: shorter plans,
   /// less controller margin.
   double velocity_fraction = 0.6;
-  /// Move acceleration cap for every joint [rad/s^2]; higher: shorter moves, larger torques.
+  /// Move acceleration cap for every joint [rad/s^2] (at most the world's
+  /// safety.max_joint_acceleration is used); higher: shorter moves, larger torques.
   double max_acceleration = 4.0;
+  /// Move TCP speed cap, fraction of the world's safety.tcp_speed, in (0, 1]; higher: shorter
+  /// moves, less margin to the safety limit.
+  double tcp_speed_fraction = 0.9;
   /// Transition sampler (P_trans) settings.
   TransitionSettings transitions;
   /// Roadmap (P_move) settings.
@@ -108,6 +112,8 @@ struct Move {
   int object = -1;  ///< held object, or -1 for the robot alone
   int grasp = -1;
   std::vector<core::ArmConfig> path;  ///< both ends included; one point when already there
+  /// Per piece: the scale of the velocity limits that keeps the TCP within its speed cap.
+  std::vector<double> speed_scale;
   Millis duration = 0;
   SiteSet touches;   ///< object sites the path would touch (all of them unoccupied when planned)
   SiteSet occupied;  ///< object sites it was planned around
@@ -134,6 +140,8 @@ class MotionHypergraph {
   const ObjectSites& sites() const { return sites_; }
   const RepresentationSettings& settings() const { return settings_; }
   const TimingLimits& timing() const { return timing_; }
+  /// The limits piece i of `move` is timed with (timing() with its speed scale).
+  TimingLimits pieceTiming(const Move& move, std::size_t i) const;
 
   /// Virtual source / target as motion vertex sets (the start and goal decomposition).
   const std::vector<int>& sourceVertices() const { return source_; }
@@ -257,6 +265,9 @@ class MotionHypergraph {
   void sampleHandoffs(int hyperarc, int grasp, int round);
   Roadmap& roadmap(int robot, int object, int grasp);
   Move makeMove(int robot, int object, int grasp, std::vector<core::ArmConfig> path, const SiteSet& occupied);
+  /// Per piece of `path`: the speed scale that keeps the TCP within tcp_speed_fraction of the
+  /// world's safety.tcp_speed (speedScaleWithin, the TCP's rate sampled along the piece).
+  std::vector<double> tcpSpeedScales(const std::vector<core::ArmConfig>& path) const;
 
   const core::LoadedWorld* world_;
   const TaskSpaceHypergraph* task_space_;

@@ -34,13 +34,17 @@ PathProfile profile(const core::ArmConfig& a, const core::ArmConfig& b, const Ti
     p.s_accel = std::min(p.s_accel, limits.max_acceleration[j] / delta);
   }
   if (std::isinf(p.s_speed)) return {0.0, 0.0, 0.0};  // a == b
-  // triangle when the cruise speed is not reached within half the path
-  if (p.s_speed * p.s_speed / p.s_accel >= 1.0) {
-    p.duration = 2.0 * std::sqrt(1.0 / p.s_accel);
-    p.s_speed = std::sqrt(p.s_accel);
-  } else {
-    p.duration = 1.0 / p.s_speed + p.s_speed / p.s_accel;
-  }
+  // the time-optimal ramp and cruise (none: a triangle, when the cruise speed is not reached
+  // within half the path), each lengthened to whole milliseconds, so the acceleration switches
+  // on sample times (timePolyline) and the duration is whole; slower, so within the limits
+  const bool triangle = p.s_speed * p.s_speed / p.s_accel >= 1.0;
+  const double ramp = triangle ? std::sqrt(1.0 / p.s_accel) : p.s_speed / p.s_accel;
+  const double cruise = triangle ? 0.0 : 1.0 / p.s_speed - ramp;
+  const double ramp_whole = toSeconds(std::max<Millis>(1, ceilMillis(ramp)));
+  const double cruise_whole = toSeconds(ceilMillis(cruise));
+  p.s_speed = 1.0 / (ramp_whole + cruise_whole);
+  p.s_accel = p.s_speed / ramp_whole;
+  p.duration = 2.0 * ramp_whole + cruise_whole;
   return p;
 }
 
@@ -98,26 +102,69 @@ TimedSample restToRestSample(const core::ArmConfig& a, const core::ArmConfig& b,
   return {t, q, qd};
 }
 
-Millis polylineDuration(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits) {
+TimingLimits withSpeedScale(TimingLimits limits, double scale) {
+  for (double& v : limits.max_velocity) v *= scale;
+  return limits;
+}
+
+double speedScaleWithin(const core::ArmConfig& a, const core::ArmConfig& b, const TimingLimits& limits,
+                        double path_rate, double max_speed) {
+  // the profile's path speed never exceeds the velocity limits' cap on it
+  double s_speed = std::numeric_limits<double>::infinity();
+  for (int j = 0; j < 6; ++j) {
+    const double delta = std::abs(b[j] - a[j]);
+    if (delta > 0.0) s_speed = std::min(s_speed, limits.max_velocity[j] / delta);
+  }
+  if (std::isinf(s_speed) || path_rate * s_speed <= max_speed) return 1.0;
+  return max_speed / (path_rate * s_speed);
+}
+
+namespace {
+double scaleOf(const std::vector<double>& speed_scales, std::size_t piece) {
+  return piece < speed_scales.size() ? speed_scales[piece] : 1.0;
+}
+}  // namespace
+
+Millis polylineDuration(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits,
+                        const std::vector<double>& speed_scales) {
   Millis total = 0;
-  for (std::size_t i = 1; i < waypoints.size(); ++i) total += restToRestDuration(waypoints[i - 1], waypoints[i], limits);
+  for (std::size_t i = 1; i < waypoints.size(); ++i) {
+    total += restToRestDuration(waypoints[i - 1], waypoints[i], withSpeedScale(limits, scaleOf(speed_scales, i - 1)));
+  }
   return total;
 }
 
-std::vector<TimedSample> timePolyline(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits,
-                                      Millis sample_step) {
+std::vector<TimedSample> timePolyline(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& all_limits,
+                                      Millis sample_step, const std::vector<double>& speed_scales) {
   if (waypoints.empty()) throw std::invalid_argument("timePolyline: no waypoints");
   if (sample_step <= 0) throw std::invalid_argument("timePolyline: the sample step must be positive");
   std::vector<TimedSample> samples{{0, waypoints.front(), {}}};
   Millis start = 0;
   for (std::size_t i = 1; i < waypoints.size(); ++i) {
-    const Millis duration = restToRestDuration(waypoints[i - 1], waypoints[i], limits);
+    const core::ArmConfig& a = waypoints[i - 1];
+    const core::ArmConfig& b = waypoints[i];
+    const TimingLimits limits = withSpeedScale(all_limits, scaleOf(speed_scales, i - 1));
+    const Millis duration = restToRestDuration(a, b, limits);
     if (duration == 0) continue;
-    // evenly spaced interior samples, no closer than sample_step
+    // a sample where the acceleration switches (end of speeding up, start of slowing down;
+    // whole milliseconds by profile()): a cubic piece across a switch would overshoot the
+    // acceleration limit by up to half
+    const PathProfile p = profile(a, b, limits);
+    const Millis ramp = std::llround(p.s_speed / p.s_accel * 1000.0);
+    std::vector<Millis> times{ramp, duration - ramp};
+    // and evenly spaced samples, no closer than sample_step, kept half a step clear of those
     const Millis pieces = std::max<Millis>(1, duration / sample_step);
     for (Millis k = 1; k <= pieces; ++k) {
       const Millis t = duration * k / pieces;
-      TimedSample sample = restToRestSample(waypoints[i - 1], waypoints[i], duration, t, limits);
+      const bool clear = std::ranges::all_of(times.begin(), times.begin() + 2, [&](Millis s) { return 2 * std::abs(t - s) >= sample_step; });
+      if (clear || k == pieces) times.push_back(t);
+    }
+    std::ranges::sort(times);
+    const auto [last, end] = std::ranges::unique(times);
+    times.erase(last, end);
+    for (const Millis t : times) {
+      if (t <= 0 || t > duration) continue;
+      TimedSample sample = restToRestSample(a, b, duration, t, limits);
       sample.t = start + t;
       samples.push_back(sample);
     }

@@ -62,12 +62,26 @@ std::pair<core::ArmConfig, core::ArmConfig> restToRestAt(const core::ArmConfig& 
 double restToRestPeakOverMean(const core::ArmConfig& a, const core::ArmConfig& b, Millis duration, double t0,
                               double t1, const TimingLimits& limits);
 
-/// Total rest-to-rest duration of a polyline (sum over its pieces).
-Millis polylineDuration(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits);
+/// `limits` with every velocity limit scaled by `scale` in (0, 1].
+TimingLimits withSpeedScale(TimingLimits limits, double scale);
 
-/// Samples of a polyline driven rest to rest along each piece: every waypoint (at rest) and
-/// points every `sample_step` in between, starting at t = 0 with waypoints.front().
+/// The scale (<= 1) of the velocity limits at which the rest-to-rest move a -> b keeps a point
+/// within `max_speed` [m/s], the point moving at most `path_rate` [m] per unit of path (s from 0
+/// at a to 1 at b; e.g. the TCP, max over s of |J(q(s)) (b - a)|).
+double speedScaleWithin(const core::ArmConfig& a, const core::ArmConfig& b, const TimingLimits& limits,
+                        double path_rate, double max_speed);
+
+/// Total rest-to-rest duration of a polyline (sum over its pieces), piece i's velocity limits
+/// scaled by speed_scales[i] (none: 1).
+Millis polylineDuration(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits,
+                        const std::vector<double>& speed_scales = {});
+
+/// Samples of a polyline driven rest to rest along each piece: every waypoint (at rest), the
+/// instants the acceleration switches (to the nearest millisecond; so the cubic Hermite curve
+/// through the samples keeps the profile's acceleration), and points about every `sample_step`
+/// in between, starting at t = 0 with waypoints.front().
+/// Piece i's velocity limits are scaled by speed_scales[i] (none: 1).
 std::vector<TimedSample> timePolyline(const std::vector<core::ArmConfig>& waypoints, const TimingLimits& limits,
-                                      Millis sample_step = 50);
+                                      Millis sample_step = 50, const std::vector<double>& speed_scales = {});
 
 }  // namespace dashbed::planner

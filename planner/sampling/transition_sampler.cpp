@@ -11,6 +11,7 @@
 
 #include "core/geometry.h"
 #include "core/hande.h"
+#include "core/key_timing.h"
 #include "core/grasps.h"
 #include "planner/sampling/key_curve.h"
 
@@ -215,6 +216,7 @@ struct Arm {
   const core::PlacedRobot* placed = nullptr;
   ArmConfig home{};
   std::array<double, 6> max_velocity{};  // [rad/s]
+  double max_acceleration = 0.0;         // [rad/s^2], the world's safety limit
 };
 
 Arm armOf(const core::LoadedWorld& world, int robot) {
@@ -224,6 +226,7 @@ Arm armOf(const core::LoadedWorld& world, int robot) {
   arm.home = world.world->robots[static_cast<std::size_t>(robot)].home;
   const core::RobotModel& model = *arm.placed->model;
   for (int j = 0; j < 6; ++j) arm.max_velocity[j] = model.joints()[model.movableJoints()[j]].max_velocity;
+  arm.max_acceleration = world.world->safety.max_joint_acceleration;
   return arm;
 }
 
@@ -302,24 +305,33 @@ struct MotionBuilder {
   Millis now() const { return motion.keys.back().t; }
   const ArmConfig& q() const { return motion.keys.back().q; }
 
-  /// A key at q reached along a straight TCP line of `length` [m]: at the average Cartesian
-  /// speed, but no joint faster than peak_factor x its average allows under speed_fraction of
-  /// its limit (the simulator's cubic Hermite peaks above the average).
+  /// A key at q reached along a straight TCP line of `length` [m], at the average Cartesian
+  /// speed but no joint faster than peak_factor x its average allows under speed_fraction of its
+  /// limit (the curve through the keys peaks above the average). Consecutive keys form one run
+  /// from rest to rest, eased in and out within the acceleration limit (core/key_timing.h).
   void moveTo(const ArmConfig& q_next, double length, const Carry& carry) {
     double seconds = length / settings->cartesian_speed;
     for (int j = 0; j < 6; ++j) {
       seconds = std::max(seconds, std::abs(q_next[j] - q()[j]) * settings->peak_factor /
                                       (settings->speed_fraction * arm->max_velocity[j]));
     }
-    push(q_next, ceilMillis(seconds), carry);
+    push(q_next, 1, carry);
+    run_pace_.push_back(seconds);
+    retimeRun();
   }
 
-  /// A key at the current configuration `duration` later (none for a zero duration).
+  /// A key at the current configuration `duration` later (none for a zero duration); the arm
+  /// is at rest.
   void hold(Millis duration, const Carry& carry) {
     if (duration > 0) push(q(), duration, carry);
+    endRun();
   }
 
-  void grip(GripperAction action) { motion.grips.push_back({now(), action}); }
+  /// A gripper command now; the arm is at rest.
+  void grip(GripperAction action) {
+    motion.grips.push_back({now(), action});
+    endRun();
+  }
 
   /// Key k as the collision checker takes it, with the fingers of piece i.
   Eigen::VectorXd configuration(const CollisionScene& scene, std::size_t k, std::size_t i) const {
@@ -338,6 +350,26 @@ struct MotionBuilder {
 
  private:
   mutable std::optional<core::TrajectoryInterpolator> curve_;
+  std::size_t run_start_ = 0;     // the key the current run starts from, at rest
+  std::vector<double> run_pace_;  // the run's pieces at pace [s]
+
+  void endRun() {
+    run_start_ = motion.keys.size() - 1;
+    run_pace_.clear();
+  }
+
+  /// Times the keys after run_start_ as one run ending at rest at the last key.
+  void retimeRun() {
+    curve_.reset();
+    std::vector<ArmConfig> keys;
+    for (std::size_t k = run_start_; k < motion.keys.size(); ++k) keys.push_back(motion.keys[k].q);
+    core::KeyTimingLimits limits;
+    limits.max_velocity = arm->max_velocity;
+    limits.max_acceleration.fill(std::min(settings->max_acceleration, arm->max_acceleration));
+    const std::vector<Millis> times = core::restToRestKeyTimes(keys, run_pace_, limits);
+    const Millis t0 = motion.keys[run_start_].t;
+    for (std::size_t k = 1; k < times.size(); ++k) motion.keys[run_start_ + k].t = t0 + times[k];
+  }
 
   void push(const ArmConfig& q_next, Millis duration, const Carry& carry) {
     curve_.reset();
@@ -795,6 +827,24 @@ const TransitionHyperarc& hyperarcOf(const TaskSpaceHypergraph& task_space, int 
 
 }  // namespace
 
+void TransitionSettings::validate() const {
+  const auto require = [](bool ok, const char* field, const char* what) {
+    if (!ok) throw std::invalid_argument(std::string("transition settings: ") + field + ": " + what);
+  };
+  require(cartesian_distance > 0.0, "cartesian_distance", "must be positive");
+  require(cartesian_speed > 0.0, "cartesian_speed", "must be positive");
+  require(cartesian_step > 0.0, "cartesian_step", "must be positive");
+  require(speed_fraction > 0.0 && speed_fraction <= 1.0, "speed_fraction", "must be in (0, 1]");
+  require(max_acceleration > 0.0, "max_acceleration", "must be positive");
+  require(gripper_dwell >= 0.0, "gripper_dwell", "must be >= 0");
+  require(drop_height >= 0.0, "drop_height", "must be >= 0");
+  require(slide_height >= 0.0, "slide_height", "must be >= 0");
+  require(slide_distance > 0.0, "slide_distance", "must be positive");
+  require(peak_factor >= 1.0, "peak_factor", "must be >= 1");
+  require(max_step_jump > 0.0, "max_step_jump", "must be positive");
+  require(singularity_margin >= 0.0 && singularity_margin < 1.0, "singularity_margin", "must be in [0, 1)");
+}
+
 TransitionSampler::TransitionSampler(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
                                      const CollisionScene& scene, const ObjectSites& sites,
                                      const TransitionSettings& settings)
@@ -803,7 +853,9 @@ TransitionSampler::TransitionSampler(const core::LoadedWorld& world, const TaskS
       scene_(&scene),
       sites_(&sites),
       settings_(settings),
-      checker_(std::make_unique<CollisionChecker>(scene)) {}
+      checker_(std::make_unique<CollisionChecker>(scene)) {
+  settings_.validate();
+}
 
 std::vector<TransitionSample> TransitionSampler::pick(int hyperarc) {
   const TransitionHyperarc& arc = hyperarcOf(*task_space_, hyperarc, TransitionKind::kPick);

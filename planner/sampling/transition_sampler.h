@@ -68,6 +68,9 @@ struct TransitionSettings {
   double cartesian_step = 0.01;
   /// Joint speed cap along those lines, fraction of the velocity limit (see peak_factor).
   double speed_fraction = 0.5;
+  /// Joint acceleration cap along those lines [rad/s^2]: each line eases in and out within it;
+  /// higher shortens transitions, at larger torques.
+  double max_acceleration = 4.0;
   /// Wait after each gripper command [s] (also the cost-to-go of an unsampled hyperarc);
   /// shorter saves time, risks an unsettled grasp.
   double gripper_dwell = 0.6;
@@ -89,6 +92,9 @@ struct TransitionSettings {
   /// Box the handoff poses are drawn in (core::handoffZone); the task-space hypergraph's handoff
   /// test uses the default shape whatever this says.
   core::HandoffShape handoff;
+
+  /// Throws std::invalid_argument naming the field when a value is out of range.
+  void validate() const;
 };
 
 class TransitionSampler {

@@ -17,7 +17,7 @@ double snapToMillis(double ms) {
 }
 
 /// Local times of the points of a segment (path waypoints or transition keys) [ms].
-std::vector<Millis> pointTimes(const ScheduleSegment& seg, const TimingLimits& limits) {
+std::vector<Millis> pointTimes(const ScheduleSegment& seg, const MotionHypergraph& graph) {
   std::vector<Millis> times;
   if (seg.motion != nullptr) {
     for (const TransitionMotion::Key& key : seg.motion->keys) times.push_back(key.t);
@@ -25,7 +25,8 @@ std::vector<Millis> pointTimes(const ScheduleSegment& seg, const TimingLimits& l
   }
   times.push_back(0);
   for (std::size_t i = 1; i < seg.move->path.size(); ++i) {
-    times.push_back(times.back() + restToRestDuration(seg.move->path[i - 1], seg.move->path[i], limits));
+    times.push_back(times.back() +
+                    restToRestDuration(seg.move->path[i - 1], seg.move->path[i], graph.pieceTiming(*seg.move, i - 1)));
   }
   return times;
 }
@@ -62,7 +63,7 @@ ScheduleView::ScheduleView(const MotionHypergraph& graph, const Schedule& schedu
   for (std::size_t s = 0; s < schedule.segments.size(); ++s) {
     const int robot = schedule.segments[s].robot;
     timelines_[robot].segments.push_back(static_cast<int>(s));
-    timelines_[robot].times.push_back(pointTimes(schedule.segments[s], graph.timing()));
+    timelines_[robot].times.push_back(pointTimes(schedule.segments[s], graph));
     const TransitionMotion* motion = schedule.segments[s].motion;
     timelines_[robot].curves.push_back(motion != nullptr ? std::optional(keyCurve(*motion)) : std::nullopt);
     starts_[robot].push_back(toSeconds(schedule.start[s]));
@@ -107,7 +108,7 @@ double ScheduleView::peakOverMeanSpeed(int robot, int item, double t0, double t1
   const std::size_t i = pieceAt(times, t0 - start, true);
   const double piece_start = start + toSeconds(times[i]);
   return restToRestPeakOverMean(seg.move->path[i], seg.move->path[i + 1], times[i + 1] - times[i],
-                                t0 - piece_start, t1 - piece_start, graph_->timing());
+                                t0 - piece_start, t1 - piece_start, graph_->pieceTiming(*seg.move, i));
 }
 
 Eigen::VectorXd ScheduleView::full(int robot, const RobotState& state) const {
@@ -132,7 +133,9 @@ void ScheduleView::evaluate(const ScheduleSegment& seg, const std::vector<Millis
     state.q = path[0];
     return;
   }
-  state.q = restToRestAt(path[i], path[i + 1], times[i + 1] - times[i], tau - toSeconds(times[i]), graph_->timing()).first;
+  state.q = restToRestAt(path[i], path[i + 1], times[i + 1] - times[i], tau - toSeconds(times[i]),
+                         graph_->pieceTiming(*seg.move, i))
+                .first;
 }
 
 core::ArmConfig scheduledArm(const MotionHypergraph& graph, const Schedule& schedule, int robot, double t) {

@@ -44,10 +44,21 @@ std::string summaryText(const Report& report, bool quiet) {
     out << (report.execution_verdict == Verdict::kPassed ? "  PASS " : "  FAIL ") << "execution";
     if (report.execution_verdict == Verdict::kFailed) out << ": " << report.execution_failure;
     out << "\n";
+    if (!report.readiness.empty()) {
+      out << (report.ready() ? "  PASS " : "  FAIL ") << "hardware readiness";
+      const char* separator = ": ";
+      for (const core::ReadinessCheck& c : report.readiness) {
+        if (c.passed) continue;
+        out << separator << c.detail;
+        separator = "; ";
+      }
+      out << "\n";
+    }
   }
   out << (report.passed() ? "PASSED" : "FAILED") << ": " << report.passedCount() << " of " << report.actions.size()
-      << " actions passed, execution " << (report.execution_verdict == Verdict::kPassed ? "clean" : "with problems")
-      << " (" << report.simulated_time << " s simulated)\n";
+      << " actions passed, execution " << (report.execution_verdict == Verdict::kPassed ? "clean" : "with problems");
+  if (!report.readiness.empty()) out << ", hardware " << (report.ready() ? "ready" : "not ready");
+  out << " (" << report.simulated_time << " s simulated)\n";
   return out.str();
 }
 

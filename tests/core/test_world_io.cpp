@@ -132,6 +132,7 @@ void checkSameWorld(const World& a, const World& b) {
   CHECK(a.physics == b.physics);
   CHECK(a.controller == b.controller);
   CHECK(a.checks == b.checks);
+  CHECK(a.safety == b.safety);
 }
 
 // every solid part of a fixture lies within its outer box, and the parts only touch
@@ -266,6 +267,9 @@ World makeRandomWorld(std::uint64_t seed) {
   world.checks.rest_speed = between(0, 0.05);
   world.checks.settle_time = between(0, 1);
   world.checks.tracking_error_limit = between(0, 0.1);
+  world.safety.max_joint_acceleration = between(1, 10);
+  world.safety.payload = between(1, 5);
+  world.safety.tcp_speed = between(0.25, 2);
 
   deriveFixtureGeometry(world);
   return world;
@@ -295,6 +299,7 @@ const BadWorld kBadWorlds[] = {
     {"unknown_key_top.yaml", "unknown_key_top.yaml:23:1: goal: unknown key; allowed: dashbed_world, name, description, robots, fixtures, surfaces, regions, objects, goals, physics, controller, checks"},
     {"unknown_key_object.yaml", "unknown_key_object.yaml:21:5: objects[0].colour: unknown key; allowed: name, size, mass, friction, color, class, pose"},
     {"unknown_key_pose.yaml", "unknown_key_pose.yaml:22:45: objects[0].pose.roll: unknown key; allowed: xyz, yaw"},
+    {"safety_not_positive.yaml", "safety_not_positive.yaml:27:14: safety.tcp_speed: must be > 0, got 0"},
     {"unknown_key_checks.yaml", "unknown_key_checks.yaml:26:3: checks.slip: unknown key; allowed: slip_tolerance,"},
     {"duplicate_key.yaml", "duplicate_key.yaml:22:5: objects[0].mass: duplicate key (first at line 21)"},
     // types and counts
@@ -452,6 +457,9 @@ TEST_CASE("the shelf world: boards are surfaces, class goals and overrides", "[w
   CHECK(world.controller.kp[5] == 900);
   CHECK(world.controller.grip_force == 80);
   CHECK(world.checks.tracking_error_limit == 0.04);
+  CHECK(world.safety.max_joint_acceleration == 4.5);
+  CHECK(world.safety.payload == 4.0);
+  CHECK(world.safety.tcp_speed == 1.2);
   CHECK(world.findFixture("bin_red")->color == Color{0.9, 0.1, 0.1});
 
   const Region* upper = world.findRegion("upper_slot");

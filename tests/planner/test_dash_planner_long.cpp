@@ -173,10 +173,11 @@ TEST_CASE("five robots in a ring hand cubes across their shared centre", "[plann
 TEST_CASE("four robots hand twelve crossing cubes side by side, a focal weight above 1 in fewer nodes",
           "[planner][dash]") {
   // the paper's square of four robots: every cube needs a handoff, and the robots reach into
-  // the shared centre at once. One task plan, whose conflicts Greedy's default weight resolves
-  // in fewer nodes than best first (focal weight 1), here within its factor of best
-  // first's makespan (the weight bounds a node against the shortest open one when it is taken,
-  // not against best first's result: a detour may make a child shorter than its parent)
+  // the shared centre at once. Greedy's default weight resolves the conflicts in fewer nodes
+  // than best first (focal weight 1), which exhausts more task plans' conflict trees before one
+  // resolves, and here ends within its factor of best first's makespan (the weight bounds a
+  // node against the shortest open one when it is taken, not against best first's result: a
+  // detour may make a child shorter than its parent)
   const core::LoadedWorld world = core::validateWorld(tools::generateSorting({4, 12, 4, tools::StartLayout::kCross, 2}));
   const auto run = [&](double focal_weight) {
     PlannerSettings settings;
@@ -189,8 +190,7 @@ TEST_CASE("four robots hand twelve crossing cubes side by side, a focal weight a
   };
   const PlannerStats best_first = run(1.0);
   const PlannerStats focal = run(kGreedyConflictFocalWeight);
-  REQUIRE(best_first.task_plans == 1);
-  REQUIRE(focal.task_plans == 1);
+  CHECK(focal.task_plans <= best_first.task_plans);
   CHECK(focal.conflict_nodes < best_first.conflict_nodes);
   CHECK(focal.makespan <= kGreedyConflictFocalWeight * best_first.makespan);
 }
@@ -287,7 +287,7 @@ TEST_CASE("six robots in a ring get a direct plan from the second try along time
   // resolves the conflicts one after another and needs more nodes than conflict_nodes for it:
   // its own budget, conflict_nodes_along_time
   const core::LoadedWorld world =
-      core::validateWorld(tools::generateSorting({6, 6, 4, tools::StartLayout::kRandom, 1, tools::RobotLayout::kRing}));
+      core::validateWorld(tools::generateSorting({6, 6, 4, tools::StartLayout::kRandom, 3, tools::RobotLayout::kRing}));
   const PlannerSettings settings;  // `dashbed plan`'s
   REQUIRE(settings.conflict_nodes_along_time > settings.conflict_nodes);
   const PlanResult result = solvedValid(world, settings);
@@ -389,10 +389,10 @@ TEST_CASE("a robot standing in the others' way folds back over its base to wait 
 
 TEST_CASE("the search below a folded robot has re-routes of its own and leaves the others theirs",
           "[planner][dash][shelf]") {
-  // 6 shelf objects, seed 4: round 1's first greedy task plan resolves without a fold. Folded
-  // children come first there; the nodes below them have re-routes of their own, so they cannot
+  // 6 shelf objects, world seed 2: round 1's first greedy task plan resolves. Folded children
+  // come first in its search; the nodes below them have re-routes of their own, so they cannot
   // use up those the nodes without a fold need
-  WorldGraph g(core::validateWorld(tools::generateShelving({6, 4})), 4);
+  WorldGraph g(core::validateWorld(tools::generateShelving({6, 2})), 4);
   MotionHypergraph& graph = g.graph;
   const ConflictResult resolved = firstTaskPlanResolved(graph);
   CHECK_FALSE(firstConflict(graph, *resolved.schedule).has_value());

@@ -321,7 +321,7 @@ TEST_CASE("JSON report: layout, summary and nulls", "[report]") {
   for (const auto& [key, value] : json.items()) keys.push_back(key);
   CHECK(keys == std::vector<std::string>{"dashbed_report", "world", "plan", "seed", "time_step",
                                          "simulated_time", "summary", "actions", "events",
-                                         "robots", "final_still"});
+                                         "robots", "final_still", "readiness"});
   CHECK(json["dashbed_report"] == 1);
   CHECK(json["summary"]["actions"] == 3);
   CHECK(json["summary"]["passed"] == 1);
@@ -386,7 +386,7 @@ TEST_CASE("JSON report: bad input is rejected with its pointer", "[report]") {
   rejects(bad, "/summary/failed: 1 disagrees with the 2 in /actions");
   bad = good;
   bad["summary"]["verdict"] = "passed";
-  rejects(bad, "/summary/verdict: disagrees with the actions and the execution verdict");
+  rejects(bad, "/summary/verdict: disagrees with the actions, the execution verdict and the readiness checks");
   bad = good;
   bad["actions"][1]["measurements"][0].erase("unit");
   rejects(bad, "/actions/1/measurements/0/unit: missing");
@@ -503,6 +503,47 @@ TEST_CASE("JUnit XML: deterministic, and a passing report has no failures", "[re
   REQUIRE(cases[1]->first("system-out") != nullptr);
   CHECK(cases[1]->first("system-out")->text.find("r0: max tracking error 0.0123 rad") !=
         std::string::npos);
+}
+
+TEST_CASE("readiness: part of the verdict, written, read back and one JUnit case per check", "[report]") {
+  Report dut = passingReport();
+  dut.readiness.push_back({"joint speed", "r0 wrist_3_joint", 1.2, 3.14159, "rad/s", 4.5, true, ""});
+  dut.readiness.push_back({"payload", "r1 holding box", 6.2, 5.0, "kg", 7.25, false,
+                           "r1 holding box carries 6.2 kg with the gripper, above the UR5e's rated 5 kg"});
+  CHECK_FALSE(dut.ready());
+  CHECK_FALSE(dut.passed());
+  CHECK(dut.failedCount() == 0);  // the actions themselves passed
+
+  const std::string text = writeReportJson(dut);
+  CHECK(text.find("\"readiness\": \"failed\"") != std::string::npos);
+  const Report back = readReportJson(text, "report.json");
+  REQUIRE(back.readiness.size() == 2);
+  CHECK(back.readiness[1].name == "payload");
+  CHECK(back.readiness[1].subject == "r1 holding box");
+  CHECK(back.readiness[1].value == 6.2);
+  CHECK(back.readiness[1].limit == 5.0);
+  CHECK(back.readiness[1].t == 7.25);
+  CHECK_FALSE(back.readiness[1].passed);
+  CHECK(back.readiness[1].detail == dut.readiness[1].detail);
+  CHECK(writeReportJson(back) == text);
+
+  const XmlElement root = parseXml(writeJUnitXml(dut));
+  const std::size_t cases = dut.actions.size() + 1 + 2;
+  CHECK(root.attributes.at("tests") == std::to_string(cases));
+  CHECK(root.attributes.at("failures") == "1");
+  const auto testcases = root.first("testsuite")->all("testcase");
+  REQUIRE(testcases.size() == cases);
+  const XmlElement& payload = *testcases.back();
+  CHECK(payload.attributes.at("classname") == "dashbed.readiness");
+  CHECK(payload.attributes.at("name") == "payload r1 holding box");
+  REQUIRE(payload.first("failure") != nullptr);
+  CHECK(payload.first("failure")->attributes.at("type") == "readiness");
+  CHECK(payload.first("failure")->attributes.at("message") == dut.readiness[1].detail);
+  CHECK(testcases[testcases.size() - 2]->first("failure") == nullptr);
+
+  // a report of a plan the readiness check has not judged: no section, the verdict as before
+  dut.readiness.clear();
+  CHECK(dut.passed());
 }
 
 TEST_CASE("the XML checker itself rejects malformed documents", "[report]") {

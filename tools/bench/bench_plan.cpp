@@ -182,7 +182,11 @@ std::string firstFailure(const sim::Report& report) {
   for (const sim::ActionReport& action : report.actions) {
     if (action.verdict == sim::Verdict::kFailed) return action.id + ": " + action.failure;
   }
-  return "execution: " + report.execution_failure;
+  if (report.execution_verdict == sim::Verdict::kFailed) return "execution: " + report.execution_failure;
+  for (const core::ReadinessCheck& c : report.readiness) {
+    if (!c.passed) return "readiness: " + c.detail;
+  }
+  return "";
 }
 
 double threadCpuSeconds() {

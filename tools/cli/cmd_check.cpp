@@ -3,6 +3,7 @@
 
 #include <iomanip>
 #include <iostream>
+#include <optional>
 
 #include "core/asset_paths.h"
 #include "core/number_text.h"
@@ -17,16 +18,20 @@ namespace {
 struct CheckOptions {
   std::string plan_file;
   std::string world_file;
-  core::ReadinessLimits limits;
+  std::optional<double> max_joint_acceleration, payload, tcp_speed;  // the world's safety settings unless given
   bool json = false;
 };
 
 void runCheck(const CheckOptions& options) {
   const std::filesystem::path world_path = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(world_path);
+  core::World world = *loaded.world;
+  world.safety.max_joint_acceleration = options.max_joint_acceleration.value_or(world.safety.max_joint_acceleration);
+  world.safety.payload = options.payload.value_or(world.safety.payload);
+  world.safety.tcp_speed = options.tcp_speed.value_or(world.safety.tcp_speed);
   const core::Plan plan = core::loadPlanFile(options.plan_file);
-  sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, options.plan_file);
-  const core::ReadinessReport report = core::checkReadiness(plan, *loaded.world, *loaded.robots, options.limits);
+  sim::validatePlanForWorld(plan, world, *loaded.robots, options.plan_file);
+  const core::ReadinessReport report = core::checkReadiness(plan, world, *loaded.robots);
   if (options.json) {
     nlohmann::json out = {{"ready", report.ready()}, {"checks", nlohmann::json::array()}};
     for (const core::ReadinessCheck& c : report.checks) {
@@ -52,16 +57,18 @@ void addCheckCommand(CLI::App& app) {
   auto options = std::make_shared<CheckOptions>();
   CLI::App* check = app.add_subcommand(
       "check", "Hardware readiness: whether a UR5e with a Hand-E could run the plan as written, judged on the "
-               "interpolated curve (joint positions, speeds, accelerations, efforts), gripper forces, payload and grip. "
+               "interpolated curve (joint positions, speeds, accelerations, efforts, TCP speed), gripper forces, payload and grip "
+               "(limits: the robot model's and the world's `safety` section). "
                "Exit 0 ready, 1 not ready, 3 bad input.");
   check->add_option("plan", options->plan_file, "plan file (JSON)")->required();
   check->add_option("--world", options->world_file, "world file (default: worlds/default.yaml)");
-  check->add_option("--max-acceleration", options->limits.max_acceleration, "joint acceleration limit [rad/s^2]")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
-  check->add_option("--payload", options->limits.payload, "rated payload, gripper included [kg]")
-      ->check(CLI::PositiveNumber)
-      ->capture_default_str();
+  check->add_option("--max-acceleration", options->max_joint_acceleration,
+                    "joint acceleration limit [rad/s^2] (default: the world's safety.max_joint_acceleration)")
+      ->check(CLI::PositiveNumber);
+  check->add_option("--payload", options->payload, "rated payload, gripper included [kg] (default: the world's safety.payload)")
+      ->check(CLI::PositiveNumber);
+  check->add_option("--tcp-speed", options->tcp_speed, "TCP speed limit [m/s] (default: the world's safety.tcp_speed)")
+      ->check(CLI::PositiveNumber);
   check->add_flag("--json", options->json, "the checks as JSON");
   check->callback([options] { runGuarded("check", [&] { runCheck(*options); }); });
 }

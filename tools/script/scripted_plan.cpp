@@ -15,6 +15,7 @@
 
 #include "core/geometry.h"
 #include "core/grasps.h"
+#include "core/key_timing.h"
 #include "core/kinematics.h"
 #include "core/reach.h"
 
@@ -306,10 +307,11 @@ struct RobotContext {
   const core::PlacedRobot* placed = nullptr;
   std::array<std::string, 6> joint_names;
   std::array<double, 6> max_velocity{};  // [rad/s]
+  core::KeyTimingLimits limits;          // of runs of keys: the joint speed limits, the acceleration cap
   std::vector<int> gripper_links;        // links below tool0 (coupling, housing, fingers)
 };
 
-RobotContext makeContext(const core::PlacedRobot& placed) {
+RobotContext makeContext(const core::PlacedRobot& placed, double max_acceleration) {
   RobotContext context;
   context.placed = &placed;
   const core::RobotModel& model = *placed.model;
@@ -318,6 +320,8 @@ RobotContext makeContext(const core::PlacedRobot& placed) {
     context.joint_names[j] = joint.name;
     context.max_velocity[j] = joint.max_velocity;
   }
+  context.limits.max_velocity = context.max_velocity;
+  context.limits.max_acceleration.fill(max_acceleration);
   const int tool0 = model.requireLink("tool0");
   for (int link = 0; link < static_cast<int>(model.links().size()); ++link) {
     for (int up = link; up >= 0;) {
@@ -341,6 +345,7 @@ class Chain {
     Millis start;
     Millis duration;
     ArmConfig q;
+    bool rests;  ///< the arm comes to rest at q (the end of a run)
   };
   struct Grip {
     Millis t;
@@ -377,7 +382,7 @@ class Chain {
     error_ = "no IK solution clear of singularities for the " + what + ", " + describeTcp(X_WT);
   }
 
-  /// Joint-space move to q (nothing when already there).
+  /// Joint-space move to q from rest to rest (nothing when already there).
   void jointToConfig(const ArmConfig& q) {
     if (!ok() || q == q_) return;
     double seconds = settings_->min_segment_time;
@@ -385,7 +390,9 @@ class Chain {
       seconds = std::max(seconds, std::abs(q[j] - q_[j]) * settings_->peak_factor /
                                       (settings_->speed_fraction * robot_->max_velocity[j]));
     }
-    push(q, ceilMillis(seconds));
+    endRun();
+    push(q, seconds);
+    endRun();
     X_WT_ = robot_->placed->tcpPoseInWorld(q);
   }
 
@@ -419,16 +426,21 @@ class Chain {
         seconds = std::max(seconds, std::abs(q[j] - q_[j]) * settings_->peak_factor /
                                         (settings_->speed_fraction * robot_->max_velocity[j]));
       }
-      push(q, ceilMillis(seconds));
+      push(q, seconds);
       X_WT_ = X_WT;
     }
   }
 
   void grip(GripperAction action) {
-    if (ok()) grips_.push_back({elapsed_, action});
+    if (!ok()) return;
+    endRun();
+    grips_.push_back({elapsed_, action});
   }
   void dwell(Millis duration) {
-    if (ok()) elapsed_ += duration;
+    if (!ok()) return;
+    endRun();
+    elapsed_ += duration;
+    run_start_ = elapsed_;
   }
 
  private:
@@ -436,10 +448,28 @@ class Chain {
     return std::abs(std::sin(q[2])) >= settings_->singularity_margin &&
            std::abs(std::sin(q[4])) >= settings_->singularity_margin;
   }
-  void push(const ArmConfig& q, Millis duration) {
-    moves_.push_back({elapsed_, duration, q});
-    elapsed_ += duration;
+  /// Appends a key at pace `seconds` to the current run, which ends at rest there, and retimes
+  /// the run (core/key_timing.h).
+  void push(const ArmConfig& q, double seconds) {
+    if (run_pace_.empty()) run_from_ = q_;
+    run_pace_.push_back(seconds);
+    moves_.push_back({elapsed_, 0, q, true});
+    if (run_pace_.size() > 1) moves_[moves_.size() - 2].rests = false;
     q_ = q;
+    std::vector<ArmConfig> keys{run_from_};
+    const std::size_t first = moves_.size() - run_pace_.size();
+    for (std::size_t k = first; k < moves_.size(); ++k) keys.push_back(moves_[k].q);
+    const std::vector<Millis> times = core::restToRestKeyTimes(keys, run_pace_, robot_->limits);
+    for (std::size_t k = first; k < moves_.size(); ++k) {
+      moves_[k].start = run_start_ + times[k - first];
+      moves_[k].duration = times[k - first + 1] - times[k - first];
+    }
+    elapsed_ = run_start_ + times.back();
+  }
+  /// The arm rests here: the next key starts a new run.
+  void endRun() {
+    run_pace_.clear();
+    run_start_ = elapsed_;
   }
 
   const RobotContext* robot_;
@@ -447,6 +477,9 @@ class Chain {
   ArmConfig q_;
   Pose X_WT_;
   Millis elapsed_ = 0;
+  Millis run_start_ = 0;          // when the current run left rest
+  ArmConfig run_from_{};          // where it left rest
+  std::vector<double> run_pace_;  // its pieces at pace [s]
   std::vector<Move> moves_;
   std::vector<Grip> grips_;
   std::string error_;
@@ -491,7 +524,12 @@ Eigen::Matrix3d yawRotation(double yaw) { return Eigen::AngleAxisd(yaw, kUp).toR
 // ---- the planner -----------------------------------------------------------------------------
 
 struct Timeline {
-  std::vector<std::pair<Millis, ArmConfig>> points;
+  struct Point {
+    Millis t;
+    ArmConfig q;
+    bool rests;  // written with zero velocity
+  };
+  std::vector<Point> points;
   Millis t = 0;        // the robot is free from here on
   ArmConfig q{};       // where it is then
   int held = -1;       // object index
@@ -512,10 +550,10 @@ class ScriptPlanner {
   ScriptPlanner(const core::LoadedWorld& loaded, const ScriptSettings& settings, const ScriptParser& parser)
       : world_(*loaded.world), settings_(settings), parser_(parser) {
     for (const core::PlacedRobot& placed : loaded.robots->robots()) {
-      robots_.push_back(makeContext(placed));
+      robots_.push_back(makeContext(placed, std::min(settings.max_acceleration, world_.safety.max_joint_acceleration)));
       Timeline timeline;
       timeline.q = placed.spec->home;
-      timeline.points.push_back({0, timeline.q});
+      timeline.points.push_back({0, timeline.q, true});
       timelines_.push_back(std::move(timeline));
     }
     for (const core::ObjectSpec& object : world_.objects) {
@@ -580,7 +618,9 @@ class ScriptPlanner {
       core::RobotTrajectory trajectory;
       trajectory.robot = world_.robots[r].name;
       trajectory.joint_names = robots_[r].joint_names;
-      for (const auto& [t, q] : timelines_[r].points) trajectory.points.push_back({toSeconds(t), q, std::nullopt});
+      for (const Timeline::Point& p : timelines_[r].points) {
+        trajectory.points.push_back({toSeconds(p.t), p.q, p.rests ? std::optional<ArmConfig>(ArmConfig{}) : std::nullopt});
+      }
       plan.trajectories.push_back(std::move(trajectory));
     }
     std::stable_sort(gripper_.begin(), gripper_.end(),
@@ -607,8 +647,8 @@ class ScriptPlanner {
     Timeline& timeline = timelines_[r];
     for (const Chain::Move& move : chain.moves()) {
       const Millis t0 = start + move.start;
-      if (timeline.points.back().first < t0) timeline.points.push_back({t0, timeline.q});
-      timeline.points.push_back({t0 + move.duration, move.q});
+      if (timeline.points.back().t < t0) timeline.points.push_back({t0, timeline.q, true});
+      timeline.points.push_back({t0 + move.duration, move.q, move.rests});
       timeline.q = move.q;
     }
     for (const Chain::Grip& grip : chain.grips()) command(r, start + grip.t, grip.action);

@@ -45,6 +45,7 @@ struct ScriptSettings {
   double speed_fraction = 0.5;       ///< peak joint speed as a fraction of each joint's limit
   double peak_factor = 1.5;          ///< peak / average speed of a cubic segment resting at both ends
   double min_segment_time = 0.3;     ///< shortest joint-space move [s]
+  double max_acceleration = 4.0;     ///< joint acceleration cap [rad/s^2] (at most the world's safety limit)
   double cartesian_distance = 0.10;  ///< length of approaches, lifts and retreats [m]
   double cartesian_speed = 0.10;     ///< average TCP speed along them [m/s]
   double cartesian_step = 0.01;      ///< spacing of their IK waypoints [m]
@@ -57,9 +58,10 @@ struct ScriptSettings {
   double finger_clearance = 0.002;   ///< required gap between the grippers in a handoff [m]
 };
 
-/// Turns `script` into a timed plan for `world`. Trajectories have one point per waypoint and
-/// no velocities (the simulator's shape-preserving interpolation rests at both ends of each
-/// segment, so segment durations are sized for peak_factor x the average speed). Times are
+/// Turns `script` into a timed plan for `world`. Trajectories have one point per waypoint;
+/// joint-space moves go from rest to rest, each straight line is one run from rest to rest
+/// (core/key_timing.h: paced for peak_factor x the average speed, eased within
+/// max_acceleration), and the points where the arm rests carry zero velocities. Times are
 /// whole milliseconds. The result passes core::validatePlan and is deterministic.
 /// Throws ScriptError ("NAME:LINE:COLUMN: ...") for syntax errors, unknown robots, objects,
 /// regions or verbs, placing or handing an object the robot does not hold, picking with a

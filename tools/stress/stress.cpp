@@ -21,7 +21,8 @@ namespace {
 constexpr int kMaxDraws = 1000;  // draws of one object's perturbation before giving up
 
 constexpr std::array<std::string_view, kFailureClassCount> kFailureNames{
-    "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "tracking", "planner_failure", "planner_timeout"};
+    "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "tracking", "not_ready", "planner_failure",
+    "planner_timeout"};
 
 ObjectPerturbation drawPerturbation(ScenarioRng& rng, const PerturbationSigmas& sigmas) {
   // always five draws in this order, so enabling one sigma does not shift the others' draws
@@ -224,6 +225,15 @@ void classifyReport(const sim::Report& report, const core::CheckSettings& checks
     if (!outcome.primary && (collided || tracking)) {
       outcome.primary = collided ? FailureClass::kCollision : FailureClass::kTracking;
       outcome.failure = "execution: " + report.execution_failure;
+    }
+  }
+  if (!report.ready()) {
+    seen[static_cast<std::size_t>(FailureClass::kNotReady)] = true;
+    if (!outcome.primary) {
+      outcome.primary = FailureClass::kNotReady;
+      for (const core::ReadinessCheck& c : report.readiness) {
+        if (!c.passed && outcome.failure.empty()) outcome.failure = "readiness: " + c.detail;
+      }
     }
   }
   outcome.classes.clear();

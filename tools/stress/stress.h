@@ -106,12 +106,13 @@ enum class FailureClass {
   kMisplaced,       ///< a place failed: outside the region, not at rest, not flat, left it
   kCollision,       ///< unplanned contact (robot-robot, robot-scenery, robot-object) or knocked object
   kTracking,        ///< joint tracking error above the limit
+  kNotReady,        ///< the plan fails the hardware readiness check (e.g. a perturbed mass beyond the payload or grip)
   kPlannerFailure,  ///< re-plan mode: no plan (infeasible or unreachable perturbed start)
   kPlannerTimeout,  ///< re-plan mode: the planner's budget ran out
 };
-inline constexpr int kFailureClassCount = 8;
+inline constexpr int kFailureClassCount = 9;
 
-/// "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "tracking",
+/// "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "tracking", "not_ready",
 /// "planner_failure", "planner_timeout".
 std::string_view toString(FailureClass failure);
 /// The inverse of toString; throws std::invalid_argument for an unknown name.

@@ -3,7 +3,10 @@
 
 #include <algorithm>
 #include <cmath>
+#include <random>
+#include <vector>
 
+#include "core/trajectory_interpolator.h"
 #include "planner/sampling/timing.h"
 
 using namespace dashbed;
@@ -114,4 +117,49 @@ TEST_CASE("a polyline is sampled through every waypoint at rest", "[planner][tim
   }
   CHECK(waypoints_seen == 3);
   CHECK_THROWS_AS(timePolyline({}, l), std::invalid_argument);
+}
+
+TEST_CASE("the cubic curve through a polyline's samples keeps the profile's acceleration and speed limits",
+          "[planner][timing]") {
+  // random polylines: the simulator's Hermite curve through the written samples (positions and
+  // velocities) at its exact peaks, against the limits the profiles were planned with
+  std::mt19937_64 rng(7);
+  std::uniform_real_distribution<double> joint(-2.0, 2.0);
+  const TimingLimits l = limits();
+  for (int trial = 0; trial < 40; ++trial) {
+    std::vector<core::ArmConfig> path(4);
+    for (core::ArmConfig& q : path) {
+      for (double& v : q) v = joint(rng) * (trial % 2 == 0 ? 1.0 : 0.05);  // long moves and short ones
+    }
+    std::vector<core::TrajectoryPoint> points;
+    for (const TimedSample& s : timePolyline(path, l, 50)) points.push_back({toSeconds(s.t), s.q, s.qd});
+    const auto peaks = core::TrajectoryInterpolator(points).peaks();
+    for (int j = 0; j < 6; ++j) {
+      CHECK(peaks[j].acceleration <= l.max_acceleration[j] * (1.0 + 1e-6));
+      CHECK(peaks[j].speed <= l.max_velocity[j] * (1.0 + 1e-6));
+    }
+  }
+}
+
+TEST_CASE("a speed scale slows a move just enough for a point's speed cap", "[planner][timing]") {
+  const core::ArmConfig a{0, 0, 0, 0, 0, 0};
+  const core::ArmConfig b{3.0, 0, 0, 0, 0, 0};
+  const TimingLimits l = limits();  // joint 1 at 2 rad/s: path speed 2/3 per second
+  // a point 0.9 m from joint 1's axis moves 2.7 m per unit of path: 1.8 m/s unscaled
+  CHECK(speedScaleWithin(a, b, l, 2.7, 2.0) == 1.0);
+  const double scale = speedScaleWithin(a, b, l, 2.7, 0.9);
+  CHECK(scale == Approx(0.5));
+  const TimingLimits slower = withSpeedScale(l, scale);
+  CHECK(slower.max_velocity[0] == Approx(1.0));
+  CHECK(slower.max_acceleration[0] == l.max_acceleration[0]);
+  // the scaled move's peak joint speed, and so the point's, is within the cap
+  const Millis duration = restToRestDuration(a, b, slower);
+  double peak = 0.0;
+  for (int k = 0; k <= 1000; ++k) {
+    peak = std::max(peak, std::abs(restToRestAt(a, b, duration, toSeconds(duration) * k / 1000.0, slower).second[0]));
+  }
+  CHECK(peak * 0.9 <= 0.9 * (1.0 + 1e-9));
+  CHECK(polylineDuration({a, b}, l, {scale}) == duration);
+  CHECK(polylineDuration({a, b}, l) < duration);
+  CHECK(speedScaleWithin(a, a, l, 0.0, 0.1) == 1.0);  // nothing moves
 }
