@@ -1,4 +1,4 @@
-# `cmake --install build --prefix P`: the dashbed binary, the libraries with their public
+# `cmake --install build --prefix P`: the dashbed binary and dashbed-sync, the libraries with their public
 # headers, the robot assets and example worlds, and a CMake package so that another project's
 # find_package(dashbed) gives dashbed::core, dashbed::planner and dashbed::sim (with
 # dashbed::controllers, dashbed::render and dashbed::sim_job, which they build on).
@@ -15,6 +15,9 @@ install(TARGETS ${dashbed_libraries} dashbed_warnings EXPORT dashbedTargets
         ARCHIVE DESTINATION ${CMAKE_INSTALL_LIBDIR}
         INCLUDES DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dashbed)
 install(TARGETS dashbed RUNTIME DESTINATION ${CMAKE_INSTALL_BINDIR})
+# the synchronisation server of exported URScript programs
+install(PROGRAMS ${PROJECT_SOURCE_DIR}/tools/export/dashbed_sync.py DESTINATION ${CMAKE_INSTALL_BINDIR}
+        RENAME dashbed-sync)
 
 # public headers, by folder; a folder's internal/ headers stay behind
 foreach(folder core controllers sim sim/render sim/job planner planner/collision planner/task_space

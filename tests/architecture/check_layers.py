@@ -40,6 +40,7 @@ LAYERS = {
                     "tools/parallel", "tools/plot"],
     "tools/cli": ["core", "sim", "sim/*", "planner", "planner/*", "tools/*"],
     "tools/meshgen": ["core"],
+    "tools/export": ["core"],
     "examples/plan_and_simulate": ["core", "sim", "planner"],
 }
 

@@ -28,5 +28,6 @@ void addGraphCommand(CLI::App& app);
 void addStressCommand(CLI::App& app);
 void addPlanCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
+void addExportCommand(CLI::App& app);
 
 }  // namespace dashbed::tools

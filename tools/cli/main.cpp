@@ -19,6 +19,7 @@ int main(int argc, char** argv) {
   addKinCommand(app);
   addScriptCommand(app);
   addCheckCommand(app);
+  addExportCommand(app);
   addSimCommand(app);
   addRenderCommand(app);
   addBenchCommand(app);
