@@ -147,6 +147,13 @@ struct CheckSettings {
   double rest_speed = 0.01;             ///< an object is at rest below this speed [m/s]
   double settle_time = 0.5;             ///< wait after release before judging a placement [s]
   double tracking_error_limit = 0.05;   ///< joint tracking error [rad]
+  /// Smallest grip margin while holding: what the pads' friction can resist over the load on it
+  /// (sim/grip_load.h). 2: the grip still holds with half the friction coefficient (rubber on
+  /// a dusty, oily or worn surface); docs/simulation.md, "Grip margin".
+  double grip_margin = 2.0;
+  /// Smallest overlap of each pad's face with the held object's face [m^2]: a quarter of the
+  /// Hand-E pad face (22 x 25 mm); less is a grasp on the object's edge.
+  double pad_contact_area = 1.25e-4;
   bool operator==(const CheckSettings&) const = default;
 };
 

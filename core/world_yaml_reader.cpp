@@ -658,7 +658,8 @@ void Reader::controller(const Field& field, ControllerSettings& settings) const 
 void Reader::checks(const Field& field, CheckSettings& settings) const {
   const MapView map(*this, field);
   map.allowOnly({"slip_tolerance", "slip_angle_tolerance", "lift_clearance", "placement_tolerance",
-                 "upright_tolerance", "rest_speed", "settle_time", "tracking_error_limit"});
+                 "upright_tolerance", "rest_speed", "settle_time", "tracking_error_limit", "grip_margin",
+                 "pad_contact_area"});
   const std::pair<const char*, double*> fields[] = {
       {"slip_tolerance", &settings.slip_tolerance},
       {"slip_angle_tolerance", &settings.slip_angle_tolerance},
@@ -668,6 +669,8 @@ void Reader::checks(const Field& field, CheckSettings& settings) const {
       {"rest_speed", &settings.rest_speed},
       {"settle_time", &settings.settle_time},
       {"tracking_error_limit", &settings.tracking_error_limit},
+      {"grip_margin", &settings.grip_margin},
+      {"pad_contact_area", &settings.pad_contact_area},
   };
   for (const auto& [key, value] : fields) {
     if (const auto f = map.get(key)) *value = nonNegative(*f);

@@ -258,6 +258,8 @@ std::string writeWorldYaml(const World& world) {
   line("  rest_speed: " + formatNumber(checks.rest_speed));
   line("  settle_time: " + formatNumber(checks.settle_time));
   line("  tracking_error_limit: " + formatNumber(checks.tracking_error_limit));
+  line("  grip_margin: " + formatNumber(checks.grip_margin));
+  line("  pad_contact_area: " + formatNumber(checks.pad_contact_area));
 
   const SafetySettings& safety = world.safety;
   line("safety:");

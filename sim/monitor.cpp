@@ -8,8 +8,10 @@
 #include <optional>
 #include <set>
 #include <sstream>
+#include <stdexcept>
 
 #include "core/geometry.h"
+#include "sim/grip_load.h"
 
 namespace dashbed::sim {
 namespace {
@@ -26,6 +28,8 @@ constexpr double kGraspSettle = 0.1;  // [s]
 constexpr double kDropDebounce = 0.05;  // [s]
 // Minimum time both grippers must hold the object together in a handoff.
 constexpr double kMinHandoffOverlap = 0.05;  // [s]
+// The grip margin written when the pads used no friction at all (the margin is unbounded).
+constexpr double kNoFrictionUsed = 1e6;
 // Displacement of an object at rest that counts as knocking it.
 constexpr double kKnockDistance = 0.005;  // [m]
 constexpr double kKnockAngle = 0.1;       // [rad]
@@ -80,17 +84,34 @@ struct HoldEpisode {
   bool reference_set = false;
   Pose X_TO_reference = Pose::Identity();
   double slip_time = -1.0;  // when slip first exceeded the tolerance
-  std::vector<std::array<double, 3>> slip_samples;  // (t, slip [m], slip angle [rad]) every step
+  /// Every step once settled: the object's slip in the gripper and the pads' grip on it.
+  struct Sample {
+    double t;
+    double slip;          // [m]
+    double angle;         // [rad]
+    double friction_use;  // the grip's friction load, 1 = sliding (grip_load.h)
+    double area;          // the smaller pad's contact area [m^2]
+  };
+  std::vector<Sample> samples;
+  /// The object's velocity at the last sample, for its acceleration.
+  struct Velocity {
+    double t;
+    Eigen::Vector3d v, w;
+  };
+  std::optional<Velocity> previous;
 
-  /// Largest slip and slip angle over plan times [from, to].
-  std::pair<double, double> maxSlip(double from, double to) const {
-    double slip = 0.0, angle = 0.0;
-    for (const auto& sample : slip_samples) {
-      if (sample[0] < from - 1e-9 || sample[0] > to + 1e-9) continue;
-      slip = std::max(slip, sample[1]);
-      angle = std::max(angle, sample[2]);
+  /// The extremes over plan times [from, to]: largest slip, slip angle and friction use,
+  /// smallest pad contact area (infinity when there is no sample).
+  Sample worst(double from, double to) const {
+    Sample w{0.0, 0.0, 0.0, 0.0, std::numeric_limits<double>::infinity()};
+    for (const Sample& s : samples) {
+      if (s.t < from - 1e-9 || s.t > to + 1e-9) continue;
+      w.slip = std::max(w.slip, s.slip);
+      w.angle = std::max(w.angle, s.angle);
+      w.friction_use = std::max(w.friction_use, s.friction_use);
+      w.area = std::min(w.area, s.area);
     }
-    return {slip, angle};
+    return w;
   }
   std::optional<double> lost_since;
   std::optional<double> drop_time;
@@ -134,8 +155,14 @@ Measurement measure(std::string name, double value, std::string unit, std::optio
 }
 
 /// Contacts of one step, as the checks read them.
+/// How a robot's two pads touch an object.
+struct PadGrip {
+  PadContact left, right;
+};
+
 struct StepContacts {
   std::vector<std::set<int>> left, right;               // per robot: objects its left / right finger touches
+  std::vector<std::map<int, PadGrip>> pads;             // per robot: object -> its pads' grip on it
   std::vector<bool> support;                            // per object: touches scenery or another object
   std::vector<std::vector<std::string>> touched_by;     // per object: everything touching it
   std::map<std::string, Eigen::Vector3d> unplanned;     // unplanned pair -> a contact point
@@ -149,6 +176,7 @@ struct Monitor::State {
   double offset;
   const core::World& world;
   std::vector<int> left_finger, right_finger;  // model link index per robot
+  std::vector<core::CollisionShape> left_pad, right_pad;  // per robot: the fingers' pad boxes
   std::vector<int> tcp;
   std::vector<ActionTrack> actions;
   std::vector<HoldEpisode> holds;               // all episodes, in order of start
@@ -261,9 +289,10 @@ struct Monitor::State {
     StepContacts now;
     now.left.resize(world.robots.size());
     now.right.resize(world.robots.size());
+    now.pads.resize(world.robots.size());
     now.support.assign(world.objects.size(), false);
     now.touched_by.resize(world.objects.size());
-    auto& [left, right, support, touched_by, unplanned_now] = now;
+    auto& [left, right, pads, support, touched_by, unplanned_now] = now;
     for (const Contact& c : sim.contacts()) {
       for (int side = 0; side < 2; ++side) {
         const BodyRef& a = side == 0 ? c.a : c.b;
@@ -274,6 +303,13 @@ struct Monitor::State {
           last_toucher[a.index] = b.index;
           if (b.link == left_finger[b.index]) left[b.index].insert(a.index);
           if (b.link == right_finger[b.index]) right[b.index].insert(a.index);
+          if (isFinger(b)) {
+            PadGrip& grip = pads[b.index][a.index];
+            const Patch patch = padPatch(padFace(sim.linkPose(b.index, b.link), padOf(b)), sim.objectPose(a.index),
+                                         world.objects[a.index].size);
+            (b.link == left_finger[b.index] ? grip.left : grip.right) = {c.normal_force, patch.area, patch.mean_radius,
+                                                                          patch.centre_W};
+          }
           const bool planned = isFinger(b) && (inActionWith(b.index, a.index, t) ||
                                                  (active_hold[b.index] >= 0 && holds[active_hold[b.index]].object == a.index) ||
                                                  releasedRecently(b.index, a.index, t));
@@ -315,6 +351,38 @@ struct Monitor::State {
       addEvent(t, kind, detail, robot >= 0 ? attribute(robot, -1, t) : nullptr, point_W);
     }
 
+  }
+
+  /// The pad box of finger `ref`.
+  const core::CollisionShape& padOf(const BodyRef& ref) const {
+    const auto r = static_cast<std::size_t>(ref.index);
+    return ref.link == left_finger[r] ? left_pad[r] : right_pad[r];
+  }
+
+  /// The friction load on robot r's grip of the object `hold` holds (grip_load.h), its motion
+  /// from the change of its velocity since the last step; 0 on the first step of a hold.
+  double gripUse(HoldEpisode& hold, const PadGrip& pads, int r, double t) {
+    const core::ObjectSpec& object = world.objects[hold.object];
+    const Eigen::Vector3d v = sim.objectLinearVelocity(hold.object), w = sim.objectAngularVelocity(hold.object);
+    const std::optional<HoldEpisode::Velocity> previous = hold.previous;
+    hold.previous = HoldEpisode::Velocity{t, v, w};
+    if (!previous || t <= previous->t) return 0.0;
+    const Pose X_WO = sim.objectPose(hold.object);
+    const Eigen::Vector3d& e = object.size;
+    const Eigen::Vector3d box = object.mass / 12.0 * Eigen::Vector3d(e.y() * e.y() + e.z() * e.z(),
+                                                                    e.x() * e.x() + e.z() * e.z(),
+                                                                    e.x() * e.x() + e.y() * e.y());
+    HeldMotion motion;
+    motion.mass = object.mass;
+    motion.inertia_W = X_WO.linear() * box.asDiagonal() * X_WO.linear().transpose();
+    motion.com_W = X_WO.translation();
+    motion.acceleration_W = (v - previous->v) / (t - previous->t);
+    motion.angular_velocity_W = w;
+    motion.angular_acceleration_W = (w - previous->w) / (t - previous->t);
+    const Eigen::Vector3d closing_W = sim.linkPose(r, tcp[static_cast<std::size_t>(r)]).linear().col(0);
+    return gripLoad(pads.left, pads.right, closing_W, object.friction * world.physics.pad_friction, motion,
+                    world.physics.gravity)
+        .use;
   }
 
   /// Grasp episodes: a closed gripper with both pads on an object holds it; its slip in the TCP
@@ -365,7 +433,10 @@ struct Monitor::State {
         if (hold.reference_set) {
           const double slip = (X_TO.translation() - hold.X_TO_reference.translation()).norm();
           const double angle = rotationAngle(hold.X_TO_reference.linear().transpose() * X_TO.linear());
-          hold.slip_samples.push_back({t, slip, angle});
+          const auto grip = now.pads[r].find(hold.object);
+          const PadGrip pads = grip != now.pads[r].end() ? grip->second : PadGrip{};
+          const double use = gripUse(hold, pads, static_cast<int>(r), t);
+          hold.samples.push_back({t, slip, angle, use, std::min(pads.left.area, pads.right.area)});
           if (hold.slip_time < 0 && (slip > world.checks.slip_tolerance || angle > world.checks.slip_angle_tolerance)) {
             hold.slip_time = t;
             addEvent(t, "slip",
@@ -521,16 +592,30 @@ struct Monitor::State {
   void judgeSlip(const HoldEpisode& hold, double until, const std::string& who, ActionReport& r,
                  std::vector<std::string>& failures) const {
     const core::CheckSettings& checks = world.checks;
-    const auto [slip, angle] = hold.maxSlip(hold.grasp_time, until);
+    const HoldEpisode::Sample worst = hold.worst(hold.grasp_time, until);
     const std::string key = who.empty() ? "slip" : who + "_slip";
     const std::string words = who.empty() ? "slip" : who + " slip";
-    r.measurements.push_back(measure(key, slip, "m", checks.slip_tolerance, "<="));
-    r.measurements.push_back(measure(key + "_angle", angle, "rad", checks.slip_angle_tolerance, "<="));
-    if (slip > checks.slip_tolerance) {
-      failures.push_back(words + " " + fmt(slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
+    r.measurements.push_back(measure(key, worst.slip, "m", checks.slip_tolerance, "<="));
+    r.measurements.push_back(measure(key + "_angle", worst.angle, "rad", checks.slip_angle_tolerance, "<="));
+    if (worst.slip > checks.slip_tolerance) {
+      failures.push_back(words + " " + fmt(worst.slip * 1e3) + " mm > " + fmt(checks.slip_tolerance * 1e3) + " mm");
     }
-    if (angle > checks.slip_angle_tolerance) {
-      failures.push_back(words + " angle " + fmt(angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+    if (worst.angle > checks.slip_angle_tolerance) {
+      failures.push_back(words + " angle " + fmt(worst.angle) + " rad > " + fmt(checks.slip_angle_tolerance) + " rad");
+    }
+    if (std::isinf(worst.area)) return;  // never settled in the gripper: nothing to judge
+    // the grip's margin: the friction the pads could give over what the hold used at its worst
+    const std::string prefix = who.empty() ? "" : who + "_";
+    const double margin = worst.friction_use > 0.0 ? 1.0 / worst.friction_use : kNoFrictionUsed;
+    r.measurements.push_back(measure(prefix + "grip_margin", margin, "ratio", checks.grip_margin, ">="));
+    r.measurements.push_back(measure(prefix + "pad_contact_area", worst.area, "m^2", checks.pad_contact_area, ">="));
+    if (margin < checks.grip_margin) {
+      failures.push_back((who.empty() ? "" : who + " ") + "grip margin " + fmt(margin) + " < " + fmt(checks.grip_margin) +
+                         ": the load took " + fmt(100.0 * worst.friction_use) + " % of what the pads' friction resists");
+    }
+    if (worst.area < checks.pad_contact_area) {
+      failures.push_back((who.empty() ? "" : who + " ") + "pad contact " + fmt(worst.area * 1e6) + " mm^2 < " +
+                         fmt(checks.pad_contact_area * 1e6) + " mm^2");
     }
   }
 
@@ -727,6 +812,12 @@ Monitor::Monitor(const Simulation& sim, const core::Plan& plan, double plan_time
   for (const auto& robot : sim.robots().robots()) {
     s.left_finger.push_back(robot.model->requireLink("hande_left_finger"));
     s.right_finger.push_back(robot.model->requireLink("hande_right_finger"));
+    for (const int finger : {s.left_finger.back(), s.right_finger.back()}) {
+      const auto& shapes = robot.model->links()[static_cast<std::size_t>(finger)].collisions;
+      const auto pad = std::find_if(shapes.begin(), shapes.end(), [](const core::CollisionShape& c) { return c.name == "pad"; });
+      if (pad == shapes.end()) throw std::invalid_argument("Monitor: a finger of the robot model has no collision named 'pad'");
+      (finger == s.left_finger.back() ? s.left_pad : s.right_pad).push_back(*pad);
+    }
     s.tcp.push_back(robot.model->requireLink("tcp"));
   }
   s.active_hold.assign(s.world.robots.size(), -1);

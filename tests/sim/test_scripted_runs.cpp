@@ -37,6 +37,14 @@ const sim::ActionReport& action(const sim::Report& report, const std::string& id
   return report.actions.front();
 }
 
+/// The measurement of `report` named `name` (nullptr when there is none).
+const sim::Measurement* measurement(const sim::ActionReport& report, const std::string& name) {
+  for (const sim::Measurement& m : report.measurements) {
+    if (m.name == name) return &m;
+  }
+  return nullptr;
+}
+
 bool hasEvent(const sim::Report& report, const std::string& kind) {
   for (const auto& e : report.events) {
     if (e.kind == kind) return true;
@@ -103,6 +111,41 @@ TEST_CASE("closing 3 cm beside the cube is a failed grasp", "[sim][scripted]") {
   CHECK(pick.verdict == sim::Verdict::kFailed);
   CHECK_THAT(pick.failure, Catch::Matchers::Contains("grasp:"));
   CHECK(!report.passed());
+}
+
+TEST_CASE("a grasp with little margin fails with its margin, though it held", "[sim][scripted][grip]") {
+  // cube_0 made a 1.6 kg bar, 16 cm long: held at its middle it has margin to spare; held 4 cm
+  // off-centre its weight twists the grip by 0.6 Nm, most of what the pads' friction resists
+  // (60 N, friction 0.8), and the bar hangs on; on real pads it may not
+  core::World world = core::loadWorldFile(core::defaultWorldPath());
+  world.objects[0].size = Eigen::Vector3d(0.04, 0.16, 0.04);
+  world.objects[0].mass = 1.6;
+  world.goals = {core::Goal{"cube_0", "", "bin_green", {}}};
+  const core::LoadedWorld bar = core::validateWorld(world);
+  const sim::Report centred = simulate("r1 picks cube_0; r1 places cube_0 in bin_green", bar);
+  CHECK(centred.passed());
+  const sim::Measurement* margin = measurement(action(centred, "pick cube_0 by r1"), "grip_margin");
+  REQUIRE(margin != nullptr);
+  CHECK(margin->value > 4.0);
+
+  const sim::Report off = simulate("r1 picks cube_0 offset 0 0.04 0; r1 places cube_0 in bin_green", bar);
+  const auto& pick = action(off, "pick cube_0 by r1");
+  INFO(pick.failure);
+  CHECK(pick.verdict == sim::Verdict::kFailed);
+  CHECK_THAT(pick.failure, Catch::Matchers::StartsWith("grip margin "));
+  CHECK(measurement(pick, "slip")->value <= world.checks.slip_tolerance);
+  CHECK(measurement(pick, "grip_margin")->value < world.checks.grip_margin);
+}
+
+TEST_CASE("a grasp on the edge of a cube fails with its pad contact, though it held", "[sim][scripted][grip]") {
+  // 28 mm off the centre of the 40 mm cube the pads overlap it by 3 of their 25 mm
+  const sim::Report report = simulate("r1 picks cube_0 offset 0.028 0 0; r1 places cube_0 in bin_green");
+  const auto& pick = action(report, "pick cube_0 by r1");
+  INFO(pick.failure);
+  CHECK(pick.verdict == sim::Verdict::kFailed);
+  CHECK_THAT(pick.failure, Catch::Matchers::StartsWith("pad contact "));
+  CHECK(measurement(pick, "pad_contact_area")->value == Approx(0.003 * 0.025).epsilon(0.05));
+  CHECK(action(report, "place cube_0 in bin_green by r1").verdict == sim::Verdict::kPassed);
 }
 
 TEST_CASE("opening the gripper mid-carry is reported as a drop", "[sim][scripted]") {
