@@ -9,6 +9,7 @@
 #include <set>
 #include <sstream>
 #include <stdexcept>
+#include <tuple>
 
 #include "core/geometry.h"
 #include "sim/grip_load.h"
@@ -155,7 +156,7 @@ Measurement measure(std::string name, double value, std::string unit, std::optio
 }
 
 /// Contacts of one step, as the checks read them.
-/// How a robot's two pads touch an object.
+/// How hard a robot's two pads press on an object; the patches are filled in for a held one.
 struct PadGrip {
   PadContact left, right;
 };
@@ -305,10 +306,7 @@ struct Monitor::State {
           if (b.link == right_finger[b.index]) right[b.index].insert(a.index);
           if (isFinger(b)) {
             PadGrip& grip = pads[b.index][a.index];
-            const Patch patch = padPatch(padFace(sim.linkPose(b.index, b.link), padOf(b)), sim.objectPose(a.index),
-                                         world.objects[a.index].size);
-            (b.link == left_finger[b.index] ? grip.left : grip.right) = {c.normal_force, patch.area, patch.mean_radius,
-                                                                          patch.centre_W};
+            (b.link == left_finger[b.index] ? grip.left : grip.right).normal_force = c.normal_force;
           }
           const bool planned = isFinger(b) && (inActionWith(b.index, a.index, t) ||
                                                  (active_hold[b.index] >= 0 && holds[active_hold[b.index]].object == a.index) ||
@@ -353,21 +351,24 @@ struct Monitor::State {
 
   }
 
-  /// The pad box of finger `ref`.
-  const core::CollisionShape& padOf(const BodyRef& ref) const {
-    const auto r = static_cast<std::size_t>(ref.index);
-    return ref.link == left_finger[r] ? left_pad[r] : right_pad[r];
-  }
-
   /// The friction load on robot r's grip of the object `hold` holds (grip_load.h), its motion
-  /// from the change of its velocity since the last step; 0 on the first step of a hold.
-  double gripUse(HoldEpisode& hold, const PadGrip& pads, int r, double t) {
+  /// from the change of its velocity since the last step; 0 on the first step of a hold. Fills
+  /// in the pads' patches on the object.
+  double gripUse(HoldEpisode& hold, PadGrip& pads, int r, double t) {
     const core::ObjectSpec& object = world.objects[hold.object];
+    const Pose X_WO = sim.objectPose(hold.object);
+    const auto ri = static_cast<std::size_t>(r);
+    for (auto [pad, finger, shape] : {std::tuple(&pads.left, left_finger[ri], &left_pad[ri]),
+                                      std::tuple(&pads.right, right_finger[ri], &right_pad[ri])}) {
+      const Patch patch = padPatch(padFace(sim.linkPose(r, finger), *shape), X_WO, object.size);
+      pad->area = patch.area;
+      pad->mean_radius = patch.mean_radius;
+      pad->centre_W = patch.centre_W;
+    }
     const Eigen::Vector3d v = sim.objectLinearVelocity(hold.object), w = sim.objectAngularVelocity(hold.object);
     const std::optional<HoldEpisode::Velocity> previous = hold.previous;
     hold.previous = HoldEpisode::Velocity{t, v, w};
     if (!previous || t <= previous->t) return 0.0;
-    const Pose X_WO = sim.objectPose(hold.object);
     const Eigen::Vector3d& e = object.size;
     const Eigen::Vector3d box = object.mass / 12.0 * Eigen::Vector3d(e.y() * e.y() + e.z() * e.z(),
                                                                     e.x() * e.x() + e.z() * e.z(),
@@ -434,7 +435,7 @@ struct Monitor::State {
           const double slip = (X_TO.translation() - hold.X_TO_reference.translation()).norm();
           const double angle = rotationAngle(hold.X_TO_reference.linear().transpose() * X_TO.linear());
           const auto grip = now.pads[r].find(hold.object);
-          const PadGrip pads = grip != now.pads[r].end() ? grip->second : PadGrip{};
+          PadGrip pads = grip != now.pads[r].end() ? grip->second : PadGrip{};
           const double use = gripUse(hold, pads, static_cast<int>(r), t);
           hold.samples.push_back({t, slip, angle, use, std::min(pads.left.area, pads.right.area)});
           if (hold.slip_time < 0 && (slip > world.checks.slip_tolerance || angle > world.checks.slip_angle_tolerance)) {

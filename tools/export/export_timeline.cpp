@@ -11,13 +11,6 @@ namespace {
 /// Sample times closer than this are one [s].
 constexpr double kSameTime = 1e-6;
 
-int robotIndex(const core::World& world, const std::string& name) {
-  for (std::size_t r = 0; r < world.robots.size(); ++r) {
-    if (world.robots[r].name == name) return static_cast<int>(r);
-  }
-  return -1;
-}
-
 }  // namespace
 
 ExportTimeline exportTimeline(const core::Plan& plan, const core::World& world) {
@@ -39,7 +32,7 @@ ExportTimeline exportTimeline(const core::Plan& plan, const core::World& world) 
     SyncPoint sync{static_cast<int>(timeline.syncs.size()), a->start, {a->robot, a->receiver},
                    "handoff " + a->object + " " + a->robot + " -> " + a->receiver};
     std::sort(sync.robots.begin(), sync.robots.end(), [&](const std::string& x, const std::string& y) {
-      return robotIndex(world, x) < robotIndex(world, y);
+      return world.findRobot(x) < world.findRobot(y);  // the world's order
     });
     timeline.syncs.push_back(sync);
   }
