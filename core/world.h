@@ -168,6 +168,12 @@ struct SafetySettings {
   double payload = 5.0;
   /// TCP speed limit of the robot's safety configuration [m/s] (see docs/limits.md).
   double tcp_speed = 1.5;
+  /// TCP force limit of the robot's safety configuration [N]: an estimated force beyond it at
+  /// the TCP is a protective stop (controllers/collision_detection.h; see docs/limits.md).
+  double tcp_force = 150.0;
+  /// External torque limit of each arm joint, as a fraction of its rated torque: an estimated
+  /// external torque beyond it is a protective stop (docs/simulation.md, "Protective stop").
+  double external_torque = 0.5;
   bool operator==(const SafetySettings&) const = default;
 };
 

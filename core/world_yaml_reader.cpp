@@ -680,10 +680,12 @@ void Reader::checks(const Field& field, CheckSettings& settings) const {
 
 void Reader::safety(const Field& field, SafetySettings& settings) const {
   const MapView map(*this, field);
-  map.allowOnly({"max_joint_acceleration", "payload", "tcp_speed"});
+  map.allowOnly({"max_joint_acceleration", "payload", "tcp_speed", "tcp_force", "external_torque"});
   if (const auto f = map.get("max_joint_acceleration")) settings.max_joint_acceleration = positive(*f);
   if (const auto f = map.get("payload")) settings.payload = positive(*f);
   if (const auto f = map.get("tcp_speed")) settings.tcp_speed = positive(*f);
+  if (const auto f = map.get("tcp_force")) settings.tcp_force = positive(*f);
+  if (const auto f = map.get("external_torque")) settings.external_torque = positive(*f);
 }
 
 // ---- the world ----------------------------------------------------------------------------

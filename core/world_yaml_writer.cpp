@@ -266,6 +266,8 @@ std::string writeWorldYaml(const World& world) {
   line("  max_joint_acceleration: " + formatNumber(safety.max_joint_acceleration));
   line("  payload: " + formatNumber(safety.payload));
   line("  tcp_speed: " + formatNumber(safety.tcp_speed));
+  line("  tcp_force: " + formatNumber(safety.tcp_force));
+  line("  external_torque: " + formatNumber(safety.external_torque));
   return out;
 }
 

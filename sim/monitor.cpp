@@ -190,6 +190,7 @@ struct Monitor::State {
   std::vector<double> start_z;                  // per object
   std::map<std::string, double> last_touch;     // unplanned pair -> plan time it last touched
   std::vector<ExecutionEvent> events;
+  bool stop_recorded = false;  ///< the protective stop is among the events
 
   State(const Simulation& s, const core::Plan& p, double o) : sim(s), plan(p), offset(o), world(s.world()) {}
 
@@ -759,11 +760,24 @@ struct Monitor::State {
     if (inside && a.placement_speed <= checks.rest_speed) r.observed_end = *a.placement_time;
   }
 
-  /// The execution: joint tracking within its limit, no event but slips (judged by the actions),
-  /// and every object the world's goals send to a region inside it at the end. Returns the
-  /// failures; fills the report's per-robot execution numbers.
+  /// Records the cell's protective stop as an event, once, when it happens.
+  void observeProtectiveStop(const PlanExecutor& executor) {
+    const std::optional<ProtectiveStop>& stop = executor.protectiveStop();
+    if (!stop || stop_recorded) return;
+    stop_recorded = true;
+    const controllers::ProtectiveStopTrip& trip = stop->trip;
+    const std::string& robot = world.robots[static_cast<std::size_t>(stop->robot)].name;
+    const std::string what =
+        controllers::describeTrip(trip, trip.joint >= 0 ? jointName(stop->robot, trip.joint) : std::string());
+    addEvent(stop->t, "protective stop", robot + " " + what + "; the cell stopped", attribute(stop->robot, -1, stop->t),
+             stop->tcp_W);
+  }
+
+  /// The execution: no event but slips (judged by the actions; a joint off its path by more
+  /// than the tracking limit is a protective stop event), and every object the world's goals
+  /// send to a region inside it at the end. Returns the failures; fills the report's per-robot
+  /// execution numbers.
   std::vector<std::string> judgeExecution(const PlanExecutor& executor, Report& report) const {
-    const core::CheckSettings& checks = world.checks;
     std::vector<std::string> failures;
     for (std::size_t r = 0; r < world.robots.size(); ++r) {
       const TrackingStats& stats = executor.tracking(static_cast<int>(r));
@@ -772,12 +786,9 @@ struct Monitor::State {
       execution.max_tracking_error = stats.max_tracking_error;
       execution.torque_saturation = stats.steps > 0 ? static_cast<double>(stats.saturated_steps) / static_cast<double>(stats.steps) : 0.0;
       execution.max_effort_ratio = stats.max_effort_ratio;
+      execution.max_tcp_force = stats.max_tcp_force;
+      execution.max_external_torque_ratio = stats.max_external_torque_ratio;
       report.robots.push_back(execution);
-      if (stats.max_tracking_error > checks.tracking_error_limit) {
-        failures.push_back("tracking: " + execution.robot + " " + jointName(static_cast<int>(r), stats.max_error_joint) +
-                           " error " + fmt(stats.max_tracking_error) + " rad > " + fmt(checks.tracking_error_limit) +
-                           " rad at " + fmt(stats.max_error_time) + " s");
-      }
     }
     for (const ExecutionEvent& event : events) {
       if (event.kind == "slip") continue;  // judged by the grasp and handoff checks
@@ -873,6 +884,7 @@ void Monitor::observe(const PlanExecutor& executor) {
   s.trackHolds(executor, now, t);
   s.trackRestingObjects(now, t);
   s.observeActions(now, t);
+  s.observeProtectiveStop(executor);
 }
 
 Report Monitor::finish(const PlanExecutor& executor) {

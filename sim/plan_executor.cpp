@@ -7,7 +7,7 @@
 namespace dashbed::sim {
 
 PlanExecutor::PlanExecutor(Simulation& sim, const core::Plan& plan, double plan_time_offset)
-    : sim_(sim), offset_(plan_time_offset), plan_(plan) {
+    : sim_(sim), offset_(plan_time_offset), deviation_limit_(sim.world().checks.tracking_error_limit), plan_(plan) {
   const core::World& world = sim.world();
   const std::size_t n = world.robots.size();
   trajectories_.resize(n);
@@ -22,6 +22,7 @@ PlanExecutor::PlanExecutor(Simulation& sim, const core::Plan& plan, double plan_
     arm_controllers_.push_back(
         std::make_unique<controllers::JointPdController>(*robot.model, world.controller, gravity_root));
     grippers_.emplace_back(world.controller);
+    detectors_.emplace_back(*robot.model, world.safety, gravity_root, tcp_.back(), sim.timeStep());
     holds_[r].q = robot.spec->home;
   }
   for (const core::RobotTrajectory& trajectory : plan.trajectories) {
@@ -46,13 +47,14 @@ double PlanExecutor::planTime() const { return sim_.time() - offset_; }
 
 core::JointReference PlanExecutor::reference(int r) const {
   const auto& trajectory = trajectories_[r];
-  return trajectory ? trajectory->at(planTime()) : holds_[r];
+  return trajectory && !stop_ ? trajectory->at(planTime()) : holds_[r];
 }
 
 void PlanExecutor::step() {
   const core::World& world = sim_.world();
   // gripper commands due by now (a command at t acts from the first step at or after t)
-  while (next_command_ < gripper_commands_.size() && gripper_commands_[next_command_].t <= planTime() + 1e-12) {
+  while (!stop_ && next_command_ < gripper_commands_.size() &&
+         gripper_commands_[next_command_].t <= planTime() + 1e-12) {
     const core::GripperCommand& command = gripper_commands_[next_command_++];
     for (std::size_t r = 0; r < world.robots.size(); ++r) {
       if (world.robots[r].name != command.robot) continue;
@@ -70,30 +72,56 @@ void PlanExecutor::step() {
     for (std::size_t k = 0; k < world.robots.size(); ++k) held_elsewhere |= payloads_[k] && gripping_[k] == o;
     if (!held_elsewhere) payloads_[r] = payloadOf(static_cast<int>(r), o);
   }
-  for (std::size_t r = 0; r < world.robots.size(); ++r) {
+  const std::size_t n = world.robots.size();
+  std::vector<Eigen::VectorXd> q(n), qd(n);
+  std::vector<core::Vector6> tau(n);
+  for (std::size_t r = 0; r < n; ++r) {
     const int ri = static_cast<int>(r);
-    const Eigen::VectorXd q = sim_.jointPositions(ri);
-    const Eigen::VectorXd qd = sim_.jointVelocities(ri);
+    q[r] = sim_.jointPositions(ri);
+    qd[r] = sim_.jointVelocities(ri);
     const core::JointReference ref = reference(ri);
     const core::Payload* payload = payloads_[r] ? &*payloads_[r] : nullptr;
-    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q, qd, ref, payload);
+    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q[r], qd[r], ref, payload);
+    tau[r] = torques.tau;
     sim_.setArmTorques(ri, torques.tau);
-    sim_.setFingerServo(ri, grippers_[r].servo(0.5 * (q[6] + q[7])));
+    sim_.setFingerServo(ri, grippers_[r].servo(0.5 * (q[r][6] + q[r][7])));
 
     TrackingStats& stats = stats_[r];
     for (int j = 0; j < 6; ++j) {
-      const double error = std::abs(ref.q[j] - q[j]);
-      if (error > stats.max_tracking_error) {
-        stats.max_tracking_error = error;
-        stats.max_error_joint = j;
-        stats.max_error_time = planTime();
-      }
+      stats.max_tracking_error = std::max(stats.max_tracking_error, std::abs(ref.q[j] - q[r][j]));
     }
     stats.max_effort_ratio = std::max(stats.max_effort_ratio, torques.max_effort_ratio);
     if (torques.saturated) ++stats.saturated_steps;
     ++stats.steps;
   }
   sim_.step();
+  for (std::size_t r = 0; r < n; ++r) {
+    const int ri = static_cast<int>(r);
+    const core::Payload* payload = payloads_[r] ? &*payloads_[r] : nullptr;
+    controllers::CollisionDetector& detector = detectors_[r];
+    detector.update(q[r], qd[r], tau[r], sim_.jointVelocities(ri), payload);
+    stats_[r].max_tcp_force = detector.maxTcpForce();
+    stats_[r].max_external_torque_ratio = detector.maxTorqueRatio();
+    if (!stop_ && detector.trip()) stopCell(ri, *detector.trip());
+    // the controller's watch on the path: a joint too far from its reference stops the cell
+    const core::JointReference ref = reference(ri);
+    const Eigen::VectorXd q_now = sim_.jointPositions(ri);
+    for (int j = 0; j < 6 && !stop_; ++j) {
+      const double deviation = std::abs(ref.q[j] - q_now[j]);
+      if (deviation > deviation_limit_) {
+        stopCell(ri, {controllers::ProtectiveStopTrip::Cause::kPathDeviation, j, deviation, deviation_limit_});
+      }
+    }
+  }
+}
+
+void PlanExecutor::stopCell(int r, const controllers::ProtectiveStopTrip& trip) {
+  stop_ = ProtectiveStop{r, planTime(), trip, sim_.linkPose(r, tcp_[r]).translation()};
+  for (std::size_t k = 0; k < holds_.size(); ++k) {
+    const Eigen::VectorXd q = sim_.jointPositions(static_cast<int>(k));
+    holds_[k] = core::JointReference{};
+    for (int j = 0; j < 6; ++j) holds_[k].q[j] = q[j];
+  }
 }
 
 int PlanExecutor::objectClosedOn(int r, double t) const {

@@ -7,6 +7,7 @@
 #include <optional>
 #include <vector>
 
+#include "controllers/collision_detection.h"
 #include "controllers/hande_controller.h"
 #include "controllers/joint_pd.h"
 #include "core/trajectory_interpolator.h"
@@ -18,11 +19,19 @@ namespace dashbed::sim {
 /// Per-robot tracking statistics accumulated while executing.
 struct TrackingStats {
   double max_tracking_error = 0.0;  ///< [rad] max over the arm joints and steps
-  int max_error_joint = -1;         ///< arm joint (0..5) of the max error
-  double max_error_time = 0.0;      ///< [s] plan time of the max error
   long saturated_steps = 0;         ///< steps with some arm joint at its effort limit
   long steps = 0;
   double max_effort_ratio = 0.0;
+  double max_tcp_force = 0.0;              ///< [N] largest estimated external TCP force
+  double max_external_torque_ratio = 0.0;  ///< largest estimated external joint torque over its limit
+};
+
+/// A protective stop: robot `robot`'s collision detection tripped at plan time `t`.
+struct ProtectiveStop {
+  int robot = -1;
+  double t = 0.0;                        ///< [s] plan time
+  controllers::ProtectiveStopTrip trip;  ///< what crossed which limit
+  Eigen::Vector3d tcp_W = Eigen::Vector3d::Zero();  ///< the TCP then (world)
 };
 
 class PlanExecutor {
@@ -42,7 +51,15 @@ class PlanExecutor {
   /// closes on the object of a pick or of a handoff it receives (per the plan's actions), the
   /// object's mass and inertia (world file) where the object sits in the gripper then; in a
   /// handoff the receiver takes it over when the giver opens. Opening drops it.
+  /// After the step each arm's collision detection judges the external load, and each arm
+  /// joint's distance from its reference is held to checks.tracking_error_limit (a UR stops
+  /// when its position deviates from the path). The first trip is a protective stop of the
+  /// cell: from then on every robot holds the configuration it has and no gripper command is
+  /// carried out.
   void step();
+
+  /// The cell's protective stop, once one happened.
+  const std::optional<ProtectiveStop>& protectiveStop() const { return stop_; }
 
   /// The arm reference of robot r at the current time.
   core::JointReference reference(int r) const;
@@ -54,6 +71,7 @@ class PlanExecutor {
  private:
   Simulation& sim_;
   double offset_;
+  double deviation_limit_;  // [rad] path deviation that stops the cell (world checks.tracking_error_limit)
   std::vector<std::optional<core::TrajectoryInterpolator>> trajectories_;  // per robot
   std::vector<core::JointReference> holds_;  // per robot, used without a trajectory
   std::vector<std::unique_ptr<controllers::JointPdController>> arm_controllers_;
@@ -64,12 +82,16 @@ class PlanExecutor {
   std::vector<int> tcp_;                               // per robot, model link
   std::vector<int> gripping_;                          // per robot: object closed on (its payload), or -1
   std::vector<std::optional<core::Payload>> payloads_;  // per robot
+  std::vector<controllers::CollisionDetector> detectors_;  // per robot
+  std::optional<ProtectiveStop> stop_;
 
   /// The object robot r closes on at plan time t: that of its pick, or of a handoff it
   /// receives, under way at t; -1 for none.
   int objectClosedOn(int r, double t) const;
   /// Robot r's payload: object o as it sits in r's gripper now.
   core::Payload payloadOf(int r, int o) const;
+  /// Stops the cell: every robot holds where it is from the next step on.
+  void stopCell(int r, const controllers::ProtectiveStopTrip& trip);
   const core::Plan& plan_;
 };
 

@@ -211,6 +211,8 @@ Report readReport(const ReportReader& reader, const Json& document) {
     robot.max_tracking_error = numberOrNaN(reader, robots[i], pointer, "max_tracking_error");
     robot.torque_saturation = numberOrNaN(reader, robots[i], pointer, "torque_saturation");
     robot.max_effort_ratio = numberOrNaN(reader, robots[i], pointer, "max_effort_ratio");
+    robot.max_tcp_force = numberOrNaN(reader, robots[i], pointer, "max_tcp_force");
+    robot.max_external_torque_ratio = numberOrNaN(reader, robots[i], pointer, "max_external_torque_ratio");
     report.robots.push_back(std::move(robot));
   }
 
@@ -355,7 +357,9 @@ std::string eventLine(const ExecutionEvent& event) {
 std::string robotLine(const RobotExecution& robot) {
   return robot.robot + ": max tracking error " + sixDigits(robot.max_tracking_error) +
          " rad, torque saturation " + sixDigits(robot.torque_saturation * 100.0) +
-         " % of steps, max effort ratio " + sixDigits(robot.max_effort_ratio) + "\n";
+         " % of steps, max effort ratio " + sixDigits(robot.max_effort_ratio) + ", max external TCP force " +
+         sixDigits(robot.max_tcp_force) + " N, max external torque ratio " + sixDigits(robot.max_external_torque_ratio) +
+         "\n";
 }
 
 void writeTestcase(std::string& out, std::string_view classname, std::string_view name, double time,
@@ -451,6 +455,8 @@ std::string writeReportJson(const Report& report) {
     json["max_tracking_error"] = number(robot.max_tracking_error);
     json["torque_saturation"] = number(robot.torque_saturation);
     json["max_effort_ratio"] = number(robot.max_effort_ratio);
+    json["max_tcp_force"] = number(robot.max_tcp_force);
+    json["max_external_torque_ratio"] = number(robot.max_external_torque_ratio);
     robots.push_back(std::move(json));
   }
   document["robots"] = std::move(robots);

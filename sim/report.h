@@ -69,6 +69,9 @@ struct RobotExecution {
   double max_tracking_error = 0.0;  ///< [rad] over the six arm joints and the whole run
   double torque_saturation = 0.0;   ///< fraction of control steps with some arm joint at its effort limit
   double max_effort_ratio = 0.0;    ///< max |tau| / effort limit over joints and steps
+  double max_tcp_force = 0.0;       ///< [N] largest estimated external force at the TCP
+  /// Largest estimated external joint torque over its protective-stop limit (1: a stop).
+  double max_external_torque_ratio = 0.0;
 };
 
 struct Report {

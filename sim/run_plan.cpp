@@ -1,5 +1,7 @@
 #include "sim/run_plan.h"
 
+#include <algorithm>
+
 #include "core/readiness.h"
 
 #include "sim/monitor.h"
@@ -30,8 +32,10 @@ Report runPlan(const core::World& world, const core::RobotSet& robots, const cor
   PlanExecutor executor(sim, plan, offset);
   Monitor monitor(sim, plan, offset);
   const double tail = options.tail_time >= 0.0 ? options.tail_time : world.checks.settle_time + 0.5;
-  const double end = plan.duration() + tail;
+  double end = plan.duration() + tail;
   while (executor.planTime() < end) {
+    // after a protective stop the run lasts only until what it dropped has settled
+    if (executor.protectiveStop()) end = std::min(end, executor.protectiveStop()->t + tail);
     executor.step();
     monitor.observe(executor);
     if (options.on_step) options.on_step(sim, executor.planTime(), monitor);

@@ -45,12 +45,14 @@ const sim::Measurement* measurement(const sim::ActionReport& report, const std::
   return nullptr;
 }
 
-bool hasEvent(const sim::Report& report, const std::string& kind) {
+const sim::ExecutionEvent* event(const sim::Report& report, const std::string& kind) {
   for (const auto& e : report.events) {
-    if (e.kind == kind) return true;
+    if (e.kind == kind) return &e;
   }
-  return false;
+  return nullptr;
 }
+
+bool hasEvent(const sim::Report& report, const std::string& kind) { return event(report, kind) != nullptr; }
 
 /// A joint configuration of robot r putting the TCP at p_W pointing straight down.
 std::string downAt(int r, const Eigen::Vector3d& p_W) {
@@ -156,11 +158,43 @@ TEST_CASE("opening the gripper mid-carry is reported as a drop", "[sim][scripted
   CHECK(!report.passed());
 }
 
-TEST_CASE("a trajectory into the table is an unplanned contact", "[sim][scripted]") {
+TEST_CASE("a finger landing on the cube is a protective stop, not a twisted wrist", "[sim][scripted][stop]") {
+  // 3 cm off the cube's centre one finger comes down on its top face
+  const sim::Report report = simulate("r1 picks cube_0 offset 0 0.03 0; r1 moves home");
+  const sim::ExecutionEvent* stop = event(report, "protective stop");
+  REQUIRE(stop != nullptr);
+  INFO(stop->detail);
+  CHECK_THAT(stop->detail, Catch::Matchers::StartsWith("r1 "));
+  CHECK(stop->action == "pick cube_0 by r1");
+  const core::CheckSettings& checks = defaultWorld().world->checks;
+  // the cell stops while every joint is within the tracking limit of its path
+  for (const sim::RobotExecution& robot : report.robots) CHECK(robot.max_tracking_error <= checks.tracking_error_limit);
+  // and the run ends a settle time after the stop, not at the plan's end
+  CHECK(report.simulated_time == Approx(stop->t + checks.settle_time + 0.5).margin(2e-3));
+  CHECK(!report.passed());
+}
+
+TEST_CASE("a trajectory into the table is an unplanned contact and a protective stop on the TCP force", "[sim][scripted][stop]") {
   const sim::Report report = simulate("r0 moves to" + downAt(0, {-0.3, 0.0, 0.70}) + "; r0 moves home");
   CHECK(hasEvent(report, "robot-fixture contact"));
   CHECK(report.execution_verdict == sim::Verdict::kFailed);
   CHECK_THAT(report.execution_failure, Catch::Matchers::Contains("touches table"));
+  const sim::ExecutionEvent* stop = event(report, "protective stop");
+  REQUIRE(stop != nullptr);
+  INFO(stop->detail);
+  CHECK_THAT(stop->detail, Catch::Matchers::Contains("external"));
+  const sim::RobotExecution& r0 = report.robots[0];
+  CHECK((r0.max_tcp_force > defaultWorld().world->safety.tcp_force || r0.max_external_torque_ratio > 1.0));
+}
+
+TEST_CASE("a clean run stays far from the protective stop's limits", "[sim][scripted][stop]") {
+  const sim::Report report = simulate("r1 picks cube_0; r1 hands cube_0 to r0; r0 places cube_0 in bin_red");
+  REQUIRE(report.passed());
+  for (const sim::RobotExecution& robot : report.robots) {
+    INFO(robot.robot);
+    CHECK(robot.max_tcp_force < 0.25 * defaultWorld().world->safety.tcp_force);
+    CHECK(robot.max_external_torque_ratio < 0.25);
+  }
 }
 
 TEST_CASE("a place outside the goal region fails the placement", "[sim][scripted]") {

@@ -21,7 +21,7 @@ namespace {
 constexpr int kMaxDraws = 1000;  // draws of one object's perturbation before giving up
 
 constexpr std::array<std::string_view, kFailureClassCount> kFailureNames{
-    "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "tracking", "not_ready", "planner_failure",
+    "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "protective_stop", "not_ready", "planner_failure",
     "planner_timeout"};
 
 ObjectPerturbation drawPerturbation(ScenarioRng& rng, const PerturbationSigmas& sigmas) {
@@ -197,7 +197,7 @@ int TrialOutcome::failedActions() const {
       std::count_if(actions.begin(), actions.end(), [](const ActionOutcome& a) { return !a.passed; }));
 }
 
-void classifyReport(const sim::Report& report, const core::CheckSettings& checks, TrialOutcome& outcome) {
+void classifyReport(const sim::Report& report, TrialOutcome& outcome) {
   outcome.passed = report.passed();
   outcome.actions.clear();
   std::array<bool, kFailureClassCount> seen{};
@@ -217,13 +217,12 @@ void classifyReport(const sim::Report& report, const core::CheckSettings& checks
   }
   if (report.execution_verdict == sim::Verdict::kFailed) {
     const bool collided = std::any_of(report.events.begin(), report.events.end(), isCollisionEvent);
-    const bool tracking = std::any_of(report.robots.begin(), report.robots.end(), [&](const sim::RobotExecution& r) {
-      return r.max_tracking_error > checks.tracking_error_limit;
-    });
+    const bool stopped = std::any_of(report.events.begin(), report.events.end(),
+                                     [](const sim::ExecutionEvent& e) { return e.kind == "protective stop"; });
     if (collided) seen[static_cast<std::size_t>(FailureClass::kCollision)] = true;
-    if (tracking) seen[static_cast<std::size_t>(FailureClass::kTracking)] = true;
-    if (!outcome.primary && (collided || tracking)) {
-      outcome.primary = collided ? FailureClass::kCollision : FailureClass::kTracking;
+    if (stopped) seen[static_cast<std::size_t>(FailureClass::kProtectiveStop)] = true;
+    if (!outcome.primary && (collided || stopped)) {
+      outcome.primary = collided ? FailureClass::kCollision : FailureClass::kProtectiveStop;
       outcome.failure = "execution: " + report.execution_failure;
     }
   }
@@ -370,11 +369,10 @@ TrialRun TrialRunner::run(std::size_t index) const {
     const core::RobotSet robots(perturbed.world);
     run.plan = nominal_plan_;
     run.report = sim::runPlan(perturbed.world, robots, *run.plan, plan_file);
-    classifyReport(*run.report, perturbed.world.checks, outcome);
+    classifyReport(*run.report, outcome);
     return run;
   }
 
-  const core::CheckSettings checks = perturbed.world.checks;
   try {
     // an unreachable perturbed start is the planner's problem too: no plan for this trial
     const core::LoadedWorld loaded = core::validateWorld(std::move(perturbed.world));
@@ -400,7 +398,7 @@ TrialRun TrialRunner::run(std::size_t index) const {
     outcome.classes = {*outcome.primary};
     return run;
   }
-  classifyReport(*run.report, checks, outcome);
+  classifyReport(*run.report, outcome);
   return run;
 }
 

@@ -105,14 +105,14 @@ enum class FailureClass {
   kHandoffDrop,     ///< a handoff failed: no overlap, receiver not holding, object dropped
   kMisplaced,       ///< a place failed: outside the region, not at rest, not flat, left it
   kCollision,       ///< unplanned contact (robot-robot, robot-scenery, robot-object) or knocked object
-  kTracking,        ///< joint tracking error above the limit
+  kProtectiveStop,  ///< a protective stop: external torque or TCP force beyond the safety limits, or a joint off its path
   kNotReady,        ///< the plan fails the hardware readiness check (e.g. a perturbed mass beyond the payload or grip)
   kPlannerFailure,  ///< re-plan mode: no plan (infeasible or unreachable perturbed start)
   kPlannerTimeout,  ///< re-plan mode: the planner's budget ran out
 };
 inline constexpr int kFailureClassCount = 9;
 
-/// "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "tracking", "not_ready",
+/// "missed_grasp", "slip", "handoff_drop", "misplaced", "collision", "protective_stop", "not_ready",
 /// "planner_failure", "planner_timeout".
 std::string_view toString(FailureClass failure);
 /// The inverse of toString; throws std::invalid_argument for an unknown name.
@@ -153,9 +153,8 @@ struct TrialOutcome {
   int failedActions() const;
 };
 
-/// Fills passed, primary, classes, actions and failure from a report. `checks` gives the
-/// tracking limit.
-void classifyReport(const sim::Report& report, const core::CheckSettings& checks, TrialOutcome& outcome);
+/// Fills passed, primary, classes, actions and failure from a report.
+void classifyReport(const sim::Report& report, TrialOutcome& outcome);
 
 /// Outcomes as one JSON text and back (numbers round-trip exactly); used to gather outcomes
 /// from MPI ranks, and written as trials.json and beside each saved trial. Throws

@@ -274,14 +274,14 @@ TEST_CASE("a report gives the primary class and every class of a trial", "[stres
   report.actions.push_back(failedAction(core::ActionType::kPlace, "place cube_0 in bin by r1", "tilt"));
   report.events.push_back(event("robot-fixture contact", ""));
   report.execution_verdict = sim::Verdict::kFailed;
-  report.robots.push_back({"r0", 0.2, 0.0, 0.5});  // above the 0.05 rad tracking limit
+  report.events.push_back(event("protective stop", ""));
   TrialOutcome outcome;
-  classifyReport(report, core::CheckSettings{}, outcome);
+  classifyReport(report, outcome);
   CHECK_FALSE(outcome.passed);
   REQUIRE(outcome.primary);
   CHECK(*outcome.primary == FailureClass::kHandoffDrop);
   CHECK(outcome.classes == std::vector<FailureClass>{FailureClass::kHandoffDrop, FailureClass::kMisplaced,
-                                                     FailureClass::kCollision, FailureClass::kTracking});
+                                                     FailureClass::kCollision, FailureClass::kProtectiveStop});
   CHECK(outcome.failedActions() == 2);
   REQUIRE(outcome.actions.size() == 3);
   CHECK(outcome.actions[0].measurements == std::vector<MeasuredValue>{{"lift_height", 0.03}});
