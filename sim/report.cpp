@@ -177,6 +177,7 @@ Report readReport(const ReportReader& reader, const Json& document) {
   report.world = reader.string(document, "", "world");
   report.plan_file = reader.string(document, "", "plan");
   report.seed = reader.unsignedInteger(document, "", "seed");
+  if (document.contains("actions_inferred")) report.actions_inferred = reader.boolean(document, "", "actions_inferred");
   report.time_step = numberOrNaN(reader, document, "", "time_step");
   report.simulated_time = numberOrNaN(reader, document, "", "simulated_time");
 
@@ -418,6 +419,7 @@ std::string writeReportJson(const Report& report) {
   document["world"] = report.world;
   document["plan"] = report.plan_file;
   document["seed"] = report.seed;
+  document["actions_inferred"] = report.actions_inferred;
   document["time_step"] = number(report.time_step);
   document["simulated_time"] = number(report.simulated_time);
 

@@ -78,6 +78,9 @@ struct Report {
   std::string world;
   std::string plan_file;
   std::uint64_t seed = 0;
+  /// The plan had no actions: those judged were inferred from its gripper commands and what
+  /// they closed on (sim/action_inference.h).
+  bool actions_inferred = false;
   double time_step = 0.0;        ///< [s]
   double simulated_time = 0.0;   ///< [s]
   std::vector<ActionReport> actions;

@@ -4,6 +4,7 @@
 
 #include "core/readiness.h"
 
+#include "sim/action_inference.h"
 #include "sim/monitor.h"
 #include "sim/plan_executor.h"
 
@@ -27,10 +28,18 @@ void validatePlanForWorld(const core::Plan& plan, const core::World& world, cons
 
 Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                const std::string& plan_file, const RunOptions& options) {
+  // a plan made elsewhere, without actions: they are inferred from a first run
+  const bool infer = plan.actions.empty() && !plan.gripper.empty();
+  core::Plan inferred;
+  if (infer) {
+    inferred = plan;
+    inferred.actions = inferActions(world, robots, plan);
+  }
+  const core::Plan& judged = infer ? inferred : plan;
   Simulation sim(world, robots);
   const double offset = world.physics.settle_time;
-  PlanExecutor executor(sim, plan, offset);
-  Monitor monitor(sim, plan, offset);
+  PlanExecutor executor(sim, judged, offset);
+  Monitor monitor(sim, judged, offset);
   const double tail = options.tail_time >= 0.0 ? options.tail_time : world.checks.settle_time + 0.5;
   double end = plan.duration() + tail;
   while (executor.planTime() < end) {
@@ -42,6 +51,7 @@ Report runPlan(const core::World& world, const core::RobotSet& robots, const cor
   }
   Report report = monitor.finish(executor);
   report.plan_file = plan_file;
+  report.actions_inferred = infer;
   report.readiness = core::checkReadiness(plan, world, robots).checks;
   return report;
 }

@@ -28,7 +28,8 @@ void validatePlanForWorld(const core::Plan& plan, const core::World& world, cons
 
 /// Builds a simulation of `world`, lets the objects settle for physics.settle_time with the
 /// robots holding still, executes the plan under the monitor and returns the report, with the
-/// plan's hardware readiness (core::checkReadiness) in it.
+/// plan's hardware readiness (core::checkReadiness) in it. A plan with gripper commands and no
+/// actions is judged on the actions inferActions finds (sim/action_inference.h).
 Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                const std::string& plan_file, const RunOptions& options = {});
 

@@ -35,6 +35,7 @@ std::string summaryText(const Report& report, bool quiet) {
   std::ostringstream out;
   out << std::fixed << std::setprecision(2);
   if (!quiet) {
+    if (report.actions_inferred) out << "  (the plan has no actions: these were inferred from its gripper commands)\n";
     for (const ActionReport& a : report.actions) {
       out << (a.verdict == Verdict::kPassed ? "  PASS " : "  FAIL ") << std::right << std::setw(7) << a.planned_start
           << "-" << std::left << std::setw(7) << a.planned_end << std::right << " " << a.id;
