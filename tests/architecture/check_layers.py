@@ -32,7 +32,7 @@ LAYERS = {
                 "planner/search", "planner/scheduling"],
     "tools/plot": ["core", "sim/render"],
     "tools/scenarios": ["core", "planner/sampling"],
-    "tools/script": ["core"],
+    "tools/script": ["core", "planner/collision", "planner/task_space", "planner/sampling"],
     "tools/planning": ["core", "planner"],
     "tools/parallel": [],
     "tools/stress": ["core", "sim", "sim/render", "tools/planning", "tools/scenarios", "tools/parallel", "tools/plot"],

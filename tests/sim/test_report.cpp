@@ -237,6 +237,7 @@ void requireSameReport(const Report& a, const Report& b) {
   REQUIRE(a.world == b.world);
   REQUIRE(a.plan_file == b.plan_file);
   REQUIRE(a.seed == b.seed);
+  REQUIRE(a.actions_inferred == b.actions_inferred);
   REQUIRE(same(a.time_step, b.time_step));
   REQUIRE(same(a.simulated_time, b.simulated_time));
   REQUIRE(a.execution_verdict == b.execution_verdict);
@@ -282,6 +283,8 @@ void requireSameReport(const Report& a, const Report& b) {
     REQUIRE(same(a.robots[i].max_tracking_error, b.robots[i].max_tracking_error));
     REQUIRE(same(a.robots[i].torque_saturation, b.robots[i].torque_saturation));
     REQUIRE(same(a.robots[i].max_effort_ratio, b.robots[i].max_effort_ratio));
+    REQUIRE(same(a.robots[i].max_tcp_force, b.robots[i].max_tcp_force));
+    REQUIRE(same(a.robots[i].max_external_torque_ratio, b.robots[i].max_external_torque_ratio));
   }
 }
 
@@ -319,7 +322,7 @@ TEST_CASE("JSON report: layout, summary and nulls", "[report]") {
   const nlohmann::ordered_json json = nlohmann::ordered_json::parse(text);
   std::vector<std::string> keys;
   for (const auto& [key, value] : json.items()) keys.push_back(key);
-  CHECK(keys == std::vector<std::string>{"dashbed_report", "world", "plan", "seed", "time_step",
+  CHECK(keys == std::vector<std::string>{"dashbed_report", "world", "plan", "seed", "actions_inferred", "time_step",
                                          "simulated_time", "summary", "actions", "events",
                                          "robots", "final_still", "readiness"});
   CHECK(json["dashbed_report"] == 1);
@@ -353,6 +356,9 @@ TEST_CASE("JSON report: deterministic and read back exactly", "[report]") {
   dut.actions[0].measurements[0].value = 0.1 + 0.2;
   dut.actions[0].observed_start = -0.0;
   dut.robots[0].max_tracking_error = std::numeric_limits<double>::denorm_min();
+  dut.robots[0].max_tcp_force = 12.5;
+  dut.robots[0].max_external_torque_ratio = 1.0 / 3.0;
+  dut.actions_inferred = true;
   const std::string text = writeReportJson(dut);
   CHECK(writeReportJson(dut) == text);
   CHECK(writeReportJson(sampleReport()) == writeReportJson(sampleReport()));

@@ -7,8 +7,10 @@
 #include <cmath>
 #include <cstdint>
 #include <iomanip>
+#include <memory>
 #include <numbers>
 #include <optional>
+#include <random>
 #include <sstream>
 #include <utility>
 #include <vector>
@@ -18,6 +20,10 @@
 #include "core/key_timing.h"
 #include "core/kinematics.h"
 #include "core/reach.h"
+#include "planner/collision/collision_checker.h"
+#include "planner/sampling/object_sites.h"
+#include "planner/sampling/transition_sampler.h"
+#include "planner/task_space/task_space_hypergraph.h"
 
 namespace dashbed::tools {
 namespace {
@@ -512,13 +518,6 @@ UprightFrame uprightFrame(const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& si
   return frame;
 }
 
-/// Extent of a box of `size` at orientation R_WO along the world direction v [m].
-double extentAlong(const Eigen::Matrix3d& R_WO, const Eigen::Vector3d& size, const Eigen::Vector3d& v) {
-  double extent = 0.0;
-  for (int k = 0; k < 3; ++k) extent += std::abs(R_WO.col(k).dot(v)) * size[k];
-  return extent;
-}
-
 Eigen::Matrix3d yawRotation(double yaw) { return Eigen::AngleAxisd(yaw, kUp).toRotationMatrix(); }
 
 // ---- the planner -----------------------------------------------------------------------------
@@ -548,7 +547,7 @@ struct ObjectState {
 class ScriptPlanner {
  public:
   ScriptPlanner(const core::LoadedWorld& loaded, const ScriptSettings& settings, const ScriptParser& parser)
-      : world_(*loaded.world), settings_(settings), parser_(parser) {
+      : loaded_(loaded), world_(*loaded.world), settings_(settings), parser_(parser) {
     for (const core::PlacedRobot& placed : loaded.robots->robots()) {
       robots_.push_back(makeContext(placed, std::min(settings.max_acceleration, world_.safety.max_joint_acceleration)));
       Timeline timeline;
@@ -852,65 +851,32 @@ class ScriptPlanner {
 
   // -- handoff --
 
-  /// True when the two grippers stay clear by finger_clearance: the giver at q_giver with its
-  /// fingers at finger_giver [m each], the receiver at each of receiver_qs with finger_receiver.
-  bool grippersClear(int giver, const ArmConfig& q_giver, double finger_giver, int receiver,
-                     const std::vector<ArmConfig>& receiver_qs, double finger_receiver, std::string& touching) const {
-    const auto boxes = [&](int r, const ArmConfig& q, double finger) {
-      const RobotContext& robot = robots_[r];
-      const core::RobotModel& model = *robot.placed->model;
-      Eigen::VectorXd q_all = Eigen::VectorXd::Constant(model.numPositions(), finger);
-      for (int j = 0; j < 6; ++j) q_all[j] = q[j];
-      const std::vector<Pose> X_RL = core::linkPoses(model, q_all);
-      std::vector<std::pair<std::string, core::Box>> result;
-      for (const int link : robot.gripper_links) {
-        for (const core::CollisionShape& shape : model.links()[link].collisions) {
-          core::Box box;
-          box.X_WB = robot.placed->spec->X_WBase * X_RL[link] * shape.X_LS;
-          box.size = shape.type == core::ShapeType::kBox ? shape.size : Eigen::Vector3d(2 * shape.size.x(), 2 * shape.size.y(), shape.size.z());
-          box.size += Eigen::Vector3d::Constant(settings_.finger_clearance);  // half the gap on each part's every side
-          result.push_back({robotName(r) + " " + model.links()[link].name + (shape.name.empty() ? "" : "/" + shape.name), box});
-        }
-      }
-      return result;
-    };
-    const auto giver_boxes = boxes(giver, q_giver, finger_giver);
-    for (const ArmConfig& q : receiver_qs) {
-      for (const auto& [receiver_name, receiver_box] : boxes(receiver, q, finger_receiver)) {
-        for (const auto& [giver_name, giver_box] : giver_boxes) {
-          if (core::boxesOverlap(receiver_box, giver_box)) {
-            touching = receiver_name + " and " + giver_name;
-            return false;
-          }
-        }
-      }
-    }
-    return true;
+  /// The planner's handoff sampler for this world (built on the first handoff): the script
+  /// hands over with the planner's handoff geometry, IK and checks.
+  planner::TransitionSampler& handoffSampler() {
+    if (!handoffs_) handoffs_ = std::make_unique<HandoffSampling>(loaded_);
+    return handoffs_->sampler;
   }
 
-  struct HandoffCandidate {
-    Chain giver_in, receiver_in;    // to the handoff pose / to the pre-approach pose
-    Chain receiver_grasp;           // approach, close
-    Chain giver_out;                // retreat (after the giver opened)
-    Chain receiver_out;             // retreat
-    Chain giver_home;
-    Pose X_OT_receiver;
-    std::string collision;
-    bool ok() const {
-      return giver_in.ok() && receiver_in.ok() && receiver_grasp.ok() && giver_out.ok() && receiver_out.ok() &&
-             giver_home.ok() && collision.empty();
-    }
-    Millis cost() const {
-      return std::max(giver_in.elapsed(), receiver_in.elapsed()) + receiver_grasp.elapsed() + giver_out.elapsed() +
-             std::max(receiver_out.elapsed(), giver_home.elapsed());
-    }
-    const std::string& error() const {
-      for (const Chain* c : {&giver_in, &receiver_in, &receiver_grasp, &giver_out, &receiver_out, &giver_home}) {
-        if (!c->ok()) return c->error();
+  /// Places the timed keys of a transition motion on robot r's timeline from `start`; the arm
+  /// rests at its first and last key and wherever it holds still. Returns the end time.
+  Millis commitKeys(int r, const planner::TransitionMotion& motion, Millis start) {
+    Timeline& timeline = timelines_[r];
+    const auto& keys = motion.keys;
+    for (std::size_t k = 0; k < keys.size(); ++k) {
+      const bool rests = k == 0 || k + 1 == keys.size() || keys[k].q == keys[k - 1].q || keys[k].q == keys[k + 1].q;
+      const Millis t = start + keys[k].t;
+      if (timeline.points.back().t < t) {
+        timeline.points.push_back({t, keys[k].q, rests});
+      } else {
+        timeline.points.back().rests = true;  // the key the arm was brought to
       }
-      return collision;
     }
-  };
+    for (const auto& [t, action] : motion.grips) command(r, start + t, action);
+    timeline.q = keys.back().q;
+    timeline.t = start + keys.back().t;
+    return timeline.t;
+  }
 
   void handoff(const Statement& s) {
     const int g = s.robot, r = s.receiver, o = s.object;
@@ -926,105 +892,81 @@ class ScriptPlanner {
     if (receiver.held >= 0) {
       parser_.fail(s.object_token, receiver_name + " already holds " + objectName(receiver.held) + " and cannot receive " + spec.name);
     }
-    // the handoff point: the middle of the robots' handoff zone (the planner's), handoff_height up
-    const Eigen::Vector3d p_g = world_.robots[g].X_WBase.translation(), p_r = world_.robots[r].X_WBase.translation();
-    Eigen::Vector3d along = p_r - p_g;
-    along.z() = 0.0;
-    if (along.norm() < 1e-6) parser_.fail(s.verb_token, giver_name + " and " + receiver_name + " stand at the same place");
-    along.normalize();
-    const Eigen::Vector3d across = kUp.cross(along);
-    const std::optional<core::HandoffZone> zone = core::handoffZone(world_, *robots_[g].placed, *robots_[r].placed);
-    if (!zone) {
-      parser_.fail(s.verb_token, giver_name + " and " + receiver_name +
-                                     " have no handoff zone: no place near them both reach, clear of the fixtures");
-    }
-    const Eigen::Vector3d p_WO(zone->mid.x(), zone->mid.y(), zone->top + settings_.handoff_height);
-    const std::string where = "at " + vec(p_WO) + " m";
-
-    // Geometry (giver top-grasps, object frame O): the giver turns its approach axis
-    // horizontal, pointing at the receiver, fingers on the faces normal to `across` (O's
-    // closing faces); the receiver comes straight down and closes along `along`, on the two
-    // faces normal to the giver's approach (O's top and bottom), so it can later place the
-    // object from above, lying on a side face. The receiver's fingers (29.2 mm wide) pass
-    // between the giver's (the object's width apart: 40 mm for a cube), their open outer
-    // face (25 + 17.4 mm from the centre) stays short of the giver's housing face (46.4 mm
-    // behind the centre), and the giver's fingers (29.2 mm wide, vertical) stay below the
-    // receiver's housing (46.4 mm above). grippersClear checks this on the URDF boxes.
-    std::vector<HandoffCandidate> candidates;
-    for (const double giver_sign : {1.0, -1.0}) {
-      for (const double receiver_sign : {1.0, -1.0}) {
-        HandoffCandidate c{Chain(robots_[g], settings_, giver.q), Chain(robots_[r], settings_, receiver.q),
-                           Chain(robots_[r], settings_, receiver.q), Chain(robots_[g], settings_, giver.q),
-                           Chain(robots_[r], settings_, receiver.q), Chain(robots_[g], settings_, giver.q),
-                           Pose::Identity(), ""};
-        Pose X_WT_g = Pose::Identity();
-        X_WT_g.linear() << giver_sign * across, along.cross(giver_sign * across), along;
-        Pose X_WO = Pose::Identity();
-        X_WO.linear() = X_WT_g.linear() * giver.X_OT.linear().transpose();
-        X_WO.translation() = p_WO;
-        X_WT_g = X_WO * giver.X_OT;
-        Pose X_WT_r = Pose::Identity();
-        X_WT_r.linear() << receiver_sign * along, (-kUp).cross(receiver_sign * along), -kUp;
-        X_WT_r.translation() = p_WO;
-        c.X_OT_receiver = X_WO.inverse() * X_WT_r;
-
-        c.giver_in.jointTo(X_WT_g, "handoff pose of " + giver_name);
-        c.receiver_in.jointTo(shifted(X_WT_r, settings_.cartesian_distance * kUp), "pre-approach pose of " + receiver_name);
-        c.receiver_grasp = Chain(robots_[r], settings_, c.receiver_in.q());
-        c.receiver_grasp.straight(-settings_.cartesian_distance * kUp, "approach of " + receiver_name);
-        c.giver_out = Chain(robots_[g], settings_, c.giver_in.q());
-        c.giver_out.straight(-settings_.cartesian_distance * along, "retreat of " + giver_name);
-        c.receiver_out = Chain(robots_[r], settings_, c.receiver_grasp.q());
-        c.receiver_out.straight(settings_.cartesian_distance * kUp, "retreat of " + receiver_name);
-        c.giver_home = Chain(robots_[g], settings_, c.giver_out.q());
-        c.giver_home.jointToConfig(world_.robots[g].home);
-        if (c.ok()) {
-          const double width_giver = extentAlong(X_WO.linear(), spec.size, X_WT_g.linear().col(0));
-          const double width_receiver = extentAlong(X_WO.linear(), spec.size, along);
-          std::vector<ArmConfig> approach = c.receiver_grasp.waypoints();
-          approach.insert(approach.begin(), c.receiver_in.q());
-          std::string touching;
-          // receiver coming down open / closed on the object, giver still closed
-          bool clear = grippersClear(g, c.giver_in.q(), width_giver / 2, r, approach, core::kHandeMaxOpening / 2, touching) &&
-                       grippersClear(g, c.giver_in.q(), width_giver / 2, r, {c.receiver_grasp.q()}, width_receiver / 2, touching);
-          // giver opening and retreating while the receiver holds
-          std::vector<ArmConfig> giver_path = c.giver_out.waypoints();
-          giver_path.insert(giver_path.begin(), c.giver_in.q());
-          for (std::size_t i = 0; clear && i < giver_path.size(); ++i) {
-            clear = grippersClear(r, c.receiver_grasp.q(), width_receiver / 2, g, {giver_path[i]}, core::kHandeMaxOpening / 2, touching);
-          }
-          if (!clear) c.collision = "the grippers would come closer than " + fixed(settings_.finger_clearance * 1000.0, 1) + " mm (" + touching + ")";
-          if (width_receiver > core::kHandeMaxOpening - 0.005) {
-            c.collision = spec.name + " is " + fixed(width_receiver * 1000.0, 1) + " mm long along the handoff line, too wide for " +
-                          receiver_name + "'s Hand-E (opening " + fixed(core::kHandeMaxOpening * 1000.0, 0) + " mm)";
-          }
-        }
-        candidates.push_back(std::move(c));
+    planner::TransitionSampler& sampler = handoffSampler();
+    const planner::TaskSpaceHypergraph& task_space = handoffs_->task_space;
+    int hyperarc = -1;
+    for (std::size_t h = 0; h < task_space.numHyperarcs() && hyperarc < 0; ++h) {
+      const planner::TransitionHyperarc& arc = task_space.hyperarcs()[h];
+      if (arc.kind == planner::TransitionKind::kHandoff && arc.robot == g && arc.receiver == r && arc.object == o) {
+        hyperarc = static_cast<int>(h);
       }
     }
-    const HandoffCandidate& c = best(candidates, s.object_token, giver_name + " cannot hand " + spec.name + " to " + receiver_name + " " + where);
+    if (hyperarc < 0) {
+      parser_.fail(s.verb_token, giver_name + " and " + receiver_name + " cannot hand " + spec.name +
+                                     " over: they have no handoff zone (no place near them both reach, clear of the fixtures)");
+    }
+    // the planner's handoff samples for the grasp the giver holds, drawn from a fixed seed
+    planner::Grasp held{giver.X_OT, 0.5 * spec.size.dot(giver.X_OT.linear().col(0).cwiseAbs())};
+    if (sampler.handoffGrasps(o, held).empty()) {
+      parser_.fail(s.object_token, giver_name + " cannot hand " + spec.name + " to " + receiver_name + ": " +
+                                       receiver_name + " has no face pair of " + spec.name +
+                                       " to close on while " + giver_name + " holds it (docs/limits.md, handoffs)");
+    }
+    std::mt19937_64 rng(kHandoffSeed);
+    std::optional<planner::TransitionSample> sample;
+    for (int tries = 0; tries < kHandoffTries && !sample; ++tries) {
+      std::vector<planner::TransitionSample> samples = sampler.handoff(hyperarc, held, rng, 1);
+      if (!samples.empty()) sample = std::move(samples.front());
+    }
+    if (!sample) {
+      parser_.fail(s.object_token, giver_name + " cannot hand " + spec.name + " to " + receiver_name +
+                                       ": no handoff pose in their handoff zone where both reach the object, clear of "
+                                       "each other and the fixtures, with the grasp " + giver_name + " holds");
+    }
+    const planner::TransitionMotion& giving = sample->motions.front();
+    const planner::TransitionMotion& receiving = sample->motions.back();
 
-    // both arrive together once both are free
+    // both come to the handoff from where they are and arrive together
+    Chain giver_in(robots_[g], settings_, giver.q), receiver_in(robots_[r], settings_, receiver.q);
+    giver_in.jointToConfig(giving.keys.front().q);
+    receiver_in.jointToConfig(receiving.keys.front().q);
     const Millis free = std::max(giver.t, receiver.t);
-    const Millis arrive = free + std::max(c.giver_in.elapsed(), c.receiver_in.elapsed());
-    if (receiver.last_command != GripperAction::kOpen) command(r, arrive - c.receiver_in.elapsed(), GripperAction::kOpen);
-    commit(g, c.giver_in, arrive - c.giver_in.elapsed());
-    commit(r, c.receiver_in, arrive - c.receiver_in.elapsed());
-    const Millis grasped = commit(r, c.receiver_grasp, arrive);
-    command(r, grasped, GripperAction::kClose);
-    const Millis opened = grasped + ceilMillis(settings_.gripper_dwell);  // both hold: the overlap
-    command(g, opened, GripperAction::kOpen);
-    const Millis released = opened + ceilMillis(settings_.gripper_dwell);
-    const Millis giver_clear = commit(g, c.giver_out, released);
-    commit(r, c.receiver_out, giver_clear);
-    commit(g, c.giver_home, giver_clear);
-    actions_.push_back({core::ActionType::kHandoff, giver_name, receiver_name, spec.name, "", toSeconds(arrive), toSeconds(giver_clear)});
+    const Millis arrive = free + std::max(giver_in.elapsed(), receiver_in.elapsed());
+    if (receiver.last_command != GripperAction::kOpen) command(r, arrive - receiver_in.elapsed(), GripperAction::kOpen);
+    commit(g, giver_in, arrive - giver_in.elapsed());
+    commit(r, receiver_in, arrive - receiver_in.elapsed());
+    commitKeys(g, giving, arrive);
+    commitKeys(r, receiving, arrive);
+    Chain giver_home(robots_[g], settings_, giver.q);
+    giver_home.jointToConfig(world_.robots[g].home);
+    commit(g, giver_home, giver.t);
+    actions_.push_back({core::ActionType::kHandoff, giver_name, receiver_name, spec.name, "",
+                        toSeconds(arrive + sample->action_start), toSeconds(arrive + sample->action_end)});
     giver.held = -1;
     receiver.held = o;
-    receiver.X_OT = c.X_OT_receiver;
+    receiver.X_OT = sample->grasp_after->X_OT;
     objects_[o].holder = r;
   }
 
+  /// What the planner's handoff sampler stands on, built once per script.
+  struct HandoffSampling {
+    explicit HandoffSampling(const core::LoadedWorld& world)
+        : scene(*world.world, *world.robots, planner::CollisionSettings{}),
+          sites(planner::objectSites(world)),
+          task_space(planner::TaskSpaceHypergraph::fromWorld(*world.world, *world.robots,
+                                                             planner::placementReach(world, sites))),
+          sampler(world, task_space, scene, sites) {}
+    planner::CollisionScene scene;
+    planner::ObjectSites sites;
+    planner::TaskSpaceHypergraph task_space;
+    planner::TransitionSampler sampler;
+  };
+  /// Seed of the handoff pose draws, and how many rounds of draws a handoff gets.
+  static constexpr std::uint64_t kHandoffSeed = 1;
+  static constexpr int kHandoffTries = 20;
+
+  const core::LoadedWorld& loaded_;
+  std::unique_ptr<HandoffSampling> handoffs_;
   const core::World& world_;
   const ScriptSettings& settings_;
   const ScriptParser& parser_;

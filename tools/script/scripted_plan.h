@@ -1,17 +1,19 @@
 #pragma once
-// Scripted plans: a short action script -> a timed core::Plan, without the planner.
+// Scripted plans: a short action script -> a timed core::Plan, without the planner's search.
 //
-// The tool exists so that the simulator can be validated independently of the planner. Each
-// statement becomes IK waypoints joined by straight joint-space segments; approaches, lifts
-// and retreats are straight Cartesian lines sampled every centimetre. Collisions between
-// robots and with the scenery are NOT checked (the simulator's monitor reports them).
+// The tool exists so that the simulator can be validated independently of the planner's
+// search. Each statement becomes IK waypoints joined by straight joint-space segments;
+// approaches, lifts and retreats are straight Cartesian lines sampled every centimetre. A
+// handoff is one of the planner's handoff samples, checked as the planner checks it; other
+// collisions between robots and with the scenery are NOT checked (the simulator's monitor
+// reports them).
 //
 // Script language (statements separated by ';' or newlines, '#' starts a comment):
 //   r0 picks cube_1                      top grasp (the default; also "from above")
 //   r0 picks cube_1 from the side        side grasp, horizontal approach
 //   r0 places cube_1 in bin_red          on the region floor (+ a small drop height)
 //   r0 places cube_1 at X Y Z            object centre at (X, Y, Z) in W [m]
-//   r0 hands cube_1 to r1                handoff in the air between the two bases
+//   r0 hands cube_1 to r1                handoff in the air, with the planner's handoff sampler
 //   r0 waits 0.5                         [s]
 //   r0 moves home | r0 moves to Q1 .. Q6 joint move (the latter: [rad], no checks but limits)
 //   r0 opens | r0 closes                 a bare gripper command (then a dwell)
@@ -52,10 +54,8 @@ struct ScriptSettings {
   double gripper_dwell = 0.6;        ///< wait after each gripper command [s]
   double safe_height = 0.20;         ///< height of transit via points above the support [m]
   double drop_height = 0.002;        ///< release height of a placed object above its support [m]
-  double handoff_height = 0.30;      ///< handoff object centre above the handoff zone's reference height [m] (core::handoffZone)
   double max_step_jump = 0.3;        ///< largest joint change between Cartesian waypoints [rad]
   double singularity_margin = 0.05;  ///< smallest |sin| of elbow and wrist 2 accepted
-  double finger_clearance = 0.002;   ///< required gap between the grippers in a handoff [m]
 };
 
 /// Turns `script` into a timed plan for `world`. Trajectories have one point per waypoint;
@@ -65,8 +65,9 @@ struct ScriptSettings {
 /// whole milliseconds. The result passes core::validatePlan and is deterministic.
 /// Throws ScriptError ("NAME:LINE:COLUMN: ...") for syntax errors, unknown robots, objects,
 /// regions or verbs, placing or handing an object the robot does not hold, picking with a
-/// full gripper, unreachable poses (naming the robot and the pose) and handoffs whose
-/// grippers would touch.
+/// full gripper, unreachable poses (naming the robot and the pose) and handoffs for which
+/// the planner's handoff sampler (planner/sampling/transition_sampler.h, fixed seed) finds no
+/// sample.
 core::Plan planFromScript(const core::LoadedWorld& world, std::string_view script,
                           const std::string& script_name = "script", const ScriptSettings& settings = {});
 

@@ -95,7 +95,7 @@ TEST_CASE("a pick, handoff and place made elsewhere is judged as the plan with i
 
 TEST_CASE("a place beside its goal made elsewhere fails as the plan with its actions does", "[foreign][long]") {
   const core::Plan plan = tools::planFromScript(world(), "r1 picks cube_0; r1 hands cube_0 to r0; "
-                                                         "r0 places cube_0 in bin_red offset 0.15 0 0");
+                                                         "r0 places cube_0 in bin_red offset 0 0.15 0");
   const sim::Report planned = sim::runPlan(*world().world, *world().robots, plan, "plan");
   REQUIRE_FALSE(planned.passed());
   const core::Plan foreign = roundTrip(plan, "csv", scratch("beside"));
