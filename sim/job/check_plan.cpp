@@ -56,8 +56,13 @@ std::string summaryText(const Report& report, bool quiet) {
       out << "\n";
     }
   }
-  out << (report.passed() ? "PASSED" : "FAILED") << ": " << report.passedCount() << " of " << report.actions.size()
-      << " actions passed, execution " << (report.execution_verdict == Verdict::kPassed ? "clean" : "with problems");
+  out << (report.passed() ? "PASSED" : "FAILED") << ": ";
+  if (report.actions.empty()) {
+    out << (report.actions_inferred ? "no action found in the gripper commands" : "the plan has no actions");
+  } else {
+    out << report.passedCount() << " of " << report.actions.size() << " actions passed";
+  }
+  out << ", execution " << (report.execution_verdict == Verdict::kPassed ? "clean" : "with problems");
   if (!report.readiness.empty()) out << ", hardware " << (report.ready() ? "ready" : "not ready");
   out << " (" << report.simulated_time << " s simulated)\n";
   return out.str();

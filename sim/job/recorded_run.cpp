@@ -105,15 +105,19 @@ class StillRecorder {
       std::string name = "event_" + std::to_string(stills_.size() + 1) + "_" + event.kind + ".png";
       std::replace(name.begin(), name.end(), ' ', '_');
       render::writePng(renderer_.render(last_state_, camera_, overlays), dir_ / name);
-      stills_.push_back({event.t, event.kind, event.detail, (dir_ / name).string()});
+      stills_.push_back({event.t, event.kind, event.detail, referenced(name)});
     }
   }
+
+  /// How the report names a still: relative to the folder holding the stills' folder (the
+  /// report's own), so a report's bytes do not depend on where it was written.
+  std::string referenced(const std::string& name) const { return (dir_.filename() / name).generic_string(); }
 
   /// Renders the final state and writes the still files into the report.
   void finish(Report& report) {
     const std::filesystem::path final_file = dir_ / "final.png";
     render::writePng(renderer_.render(last_state_, camera_, {render::textOverlay("final state")}), final_file);
-    report.final_still = final_file.string();
+    report.final_still = referenced("final.png");
     // the report's events are the monitor's sorted by time: match them back by content
     for (const Still& still : stills_) {
       for (ExecutionEvent& event : report.events) {

@@ -55,7 +55,8 @@ struct RecordedRun {
 };
 
 /// runPlan, recording what `recording` asks for and, when `stills_dir` is not empty, a still of
-/// every failed check as it happens and of the final state there, referenced from the report.
+/// every failed check as it happens and of the final state there, referenced from the report
+/// by paths relative to the stills folder's parent (STILLS/event_1_drop.png).
 RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                               const std::string& plan_file, const RecordingOptions& recording,
                               const std::string& stills_dir = "");

@@ -17,6 +17,7 @@
 #include "tools/bench/sim_bench.h"
 #include "tools/cli/cli_support.h"
 #include "tools/cli/planner_options.h"
+#include "tools/cli/number_checks.h"
 
 namespace dashbed::tools {
 namespace {
@@ -98,12 +99,14 @@ void addBenchCommand(CLI::App& app) {
       "collision", "Time per query of the planner's collision checker: one robot, two robots, straight motions");
   checks->add_option("--world", collision->world, "world file (default: worlds/default.yaml)");
   checks->add_option("--checks", collision->checks, "configurations per query row")
-      ->check(CLI::PositiveNumber)
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
       ->capture_default_str();
   checks->add_option("--motions", collision->motions, "motions of the motionFree rows")
-      ->check(CLI::NonNegativeNumber)
+      ->check(integerIn(0, std::numeric_limits<int>::max()))
       ->capture_default_str();
-  checks->add_option("--seed", collision->seed, "seed of the drawn configurations")->capture_default_str();
+  checks->add_option("--seed", collision->seed, "seed of the drawn configurations")
+      ->check(unsigned64())
+      ->capture_default_str();
   add_record(checks);
   checks->callback([collision, record, checks] {
     runGuarded("bench collision", [&] {
@@ -124,26 +127,28 @@ void addBenchCommand(CLI::App& app) {
   plan->add_option("--starts", plan_options->starts, "sorting start layouts: cross, random")
       ->delimiter(',')
       ->capture_default_str();
-  plan->add_option("--seeds", plan_options->seeds, "seeds 1..N per row (world and planner)")->capture_default_str();
+  plan->add_option("--seeds", plan_options->seeds, "seeds 1..N per row (world and planner)")
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
+      ->capture_default_str();
   plan->add_option("--methods", plan_options->methods, "greedy (Greedy-MM-DaSH), optimal (MM-DaSH)")
       ->delimiter(',')
       ->capture_default_str();
   plan->add_option("--greedy-budget", plan_options->greedy_budget, "wall-clock budget per Greedy run [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
   plan->add_option("--optimal-budget", plan_options->optimal_budget, "wall-clock budget per MM-DaSH run [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
   plan->add_option("--max-rounds", plan_options->max_rounds, "representation expansion rounds per run")
-      ->check(CLI::PositiveNumber)
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
       ->capture_default_str();
   plan->add_option("--fallback-rounds", plan_options->fallback_rounds, kFallbackRoundsHelp)
-      ->check(CLI::NonNegativeNumber)
+      ->check(integerIn(0, std::numeric_limits<int>::max()))
       ->capture_default_str();
   plan->add_flag("--simulate,!--no-simulate", plan_options->simulate,
                  "execute every solved plan in the simulator and count those passing every check (default on)");
   plan->add_option("--jobs", plan_options->jobs, "runs at a time (threads)")
-      ->check(CLI::PositiveNumber)
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
       ->capture_default_str();
   plan->add_option("--out", plan_options->out, "output directory")->capture_default_str();
   add_record(plan);

@@ -11,6 +11,7 @@
 #include "core/world_loader.h"
 #include "sim/run_plan.h"
 #include "tools/cli/cli_support.h"
+#include "tools/cli/number_checks.h"
 
 namespace dashbed::tools {
 namespace {
@@ -64,11 +65,11 @@ void addCheckCommand(CLI::App& app) {
   check->add_option("--world", options->world_file, "world file (default: worlds/default.yaml)");
   check->add_option("--max-acceleration", options->max_joint_acceleration,
                     "joint acceleration limit [rad/s^2] (default: the world's safety.max_joint_acceleration)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   check->add_option("--payload", options->payload, "rated payload, gripper included [kg] (default: the world's safety.payload)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   check->add_option("--tcp-speed", options->tcp_speed, "TCP speed limit [m/s] (default: the world's safety.tcp_speed)")
-      ->check(CLI::PositiveNumber);
+      ->check(positiveNumber());
   check->add_flag("--json", options->json, "the checks as JSON");
   check->callback([options] { runGuarded("check", [&] { runCheck(*options); }); });
 }

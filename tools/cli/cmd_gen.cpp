@@ -9,6 +9,7 @@
 
 #include "core/world_io.h"
 #include "tools/cli/commands.h"
+#include "tools/cli/number_checks.h"
 #include "tools/scenarios/scenarios.h"
 
 namespace dashbed::tools {
@@ -41,13 +42,6 @@ core::World generateOrFail(Generate&& generate) {
     throw CLI::RuntimeError(kExitUsage);
   }
 }
-
-// The unsigned conversion alone would wrap "-1" to 2^64 - 1.
-const CLI::Validator kNotNegative(
-    [](std::string& text) {
-      return text.starts_with('-') ? std::string("the seed must not be negative") : std::string();
-    },
-    "", "NOT_NEGATIVE");
 
 }  // namespace
 
@@ -86,7 +80,7 @@ void addGenCommand(CLI::App& app) {
       ->check(CLI::IsMember({"paper", "rows", "ring"}))
       ->capture_default_str();
   sort->add_option("--cubes", sort_options->params.cubes, "Number of cubes (>= 1)")
-      ->check(CLI::PositiveNumber)
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
       ->capture_default_str();
   CLI::Option* classes =
       sort->add_option("--classes", sort_options->params.classes,
@@ -98,7 +92,7 @@ void addGenCommand(CLI::App& app) {
       ->check(CLI::IsMember({"cross", "random"}))
       ->capture_default_str();
   sort->add_option("--seed", sort_options->params.seed, "Random seed (unsigned 64-bit)")
-      ->check(kNotNegative)
+      ->check(unsigned64())
       ->capture_default_str();
   sort->add_option("-o,--output", sort_options->output, "Output file (default: stdout)");
   sort->callback([sort_options, classes] {
@@ -129,7 +123,7 @@ void addGenCommand(CLI::App& app) {
                     "Number of objects: even, 2..12 (pairs of green back + blue front)")
       ->capture_default_str();
   shelf->add_option("--seed", shelf_options->params.seed, "Random seed (unsigned 64-bit)")
-      ->check(kNotNegative)
+      ->check(unsigned64())
       ->capture_default_str();
   shelf->add_option("-o,--output", shelf_options->output, "Output file (default: stdout)");
   shelf->callback([shelf_options] {

@@ -8,6 +8,7 @@
 #include "core/world_loader.h"
 #include "tools/cli/cli_support.h"
 #include "tools/cli/planner_options.h"
+#include "tools/cli/number_checks.h"
 #include "tools/planning/run_planner.h"
 
 namespace dashbed::tools {
@@ -60,15 +61,15 @@ void addPlannerOptions(CLI::App& command, PlannerChoice& choice) {
   command.add_option("--method", choice.method, "greedy (Greedy-MM-DaSH) or optimal (MM-DaSH)")
       ->check(CLI::IsMember({"greedy", "optimal"}))
       ->capture_default_str();
-  command.add_option("--seed", choice.seed, "sampling seed")->capture_default_str();
+  command.add_option("--seed", choice.seed, "sampling seed")->check(unsigned64())->capture_default_str();
   command.add_option("--time-budget", choice.time_budget, "wall-clock budget [s]")
-      ->check(CLI::PositiveNumber)
+      ->check(positiveNumber())
       ->capture_default_str();
   command.add_option("--max-rounds", choice.max_rounds, "representation expansion rounds")
-      ->check(CLI::PositiveNumber)
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
       ->capture_default_str();
   command.add_option("--fallback-rounds", choice.fallback_rounds, kFallbackRoundsHelp)
-      ->check(CLI::NonNegativeNumber)
+      ->check(integerIn(0, std::numeric_limits<int>::max()))
       ->capture_default_str();
   command.add_option("--conflict-focal", choice.conflict_focal,
                      "focal weight of the greedy queries' conflict resolution (>= 1): a node up to this factor longer "

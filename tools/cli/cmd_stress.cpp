@@ -15,6 +15,7 @@
 #include "sim/run_plan.h"
 #include "tools/cli/cli_support.h"
 #include "tools/cli/planner_options.h"
+#include "tools/cli/number_checks.h"
 #include "tools/parallel/parallel_trials.h"
 #include "tools/stress/process_group.h"
 #include "tools/stress/stress.h"
@@ -170,12 +171,24 @@ void addStressCommand(CLI::App& app) {
   stress->add_option("--plan", options->plan_file, "replay this plan (default: plan the nominal world)");
   stress->add_option("--mode", options->mode, "replay (the nominal plan, open-loop) or replan (plan every trial)")
       ->capture_default_str();
-  stress->add_option("--trials,-n", s.trials, "trials (per sweep point)")->capture_default_str();
-  stress->add_option("--seed", s.seed, "campaign seed; trial i uses a seed mixed from it and i")->capture_default_str();
-  stress->add_option("--sigma-xy", s.sigmas.xy, "std dev of the x and y offsets [m]")->capture_default_str();
-  stress->add_option("--sigma-yaw", s.sigmas.yaw, "std dev of the yaw offset [rad]")->capture_default_str();
-  stress->add_option("--sigma-mass", s.sigmas.mass, "std dev of log(mass scale) [-]")->capture_default_str();
-  stress->add_option("--sigma-friction", s.sigmas.friction, "std dev of log(friction scale) [-]")->capture_default_str();
+  stress->add_option("--trials,-n", s.trials, "trials (per sweep point)")
+      ->check(integerIn(1, std::numeric_limits<int>::max()))
+      ->capture_default_str();
+  stress->add_option("--seed", s.seed, "campaign seed; trial i uses a seed mixed from it and i")
+      ->check(unsigned64())
+      ->capture_default_str();
+  stress->add_option("--sigma-xy", s.sigmas.xy, "std dev of the x and y offsets [m]")
+      ->check(nonNegativeNumber())
+      ->capture_default_str();
+  stress->add_option("--sigma-yaw", s.sigmas.yaw, "std dev of the yaw offset [rad]")
+      ->check(nonNegativeNumber())
+      ->capture_default_str();
+  stress->add_option("--sigma-mass", s.sigmas.mass, "std dev of log(mass scale) [-]")
+      ->check(nonNegativeNumber())
+      ->capture_default_str();
+  stress->add_option("--sigma-friction", s.sigmas.friction, "std dev of log(friction scale) [-]")
+      ->check(nonNegativeNumber())
+      ->capture_default_str();
   stress->add_option("--sweep", s.sweep_xy, "sweep sigma_xy over these increasing values [m] (comma-separated); "
                                             "writes OUT/sweep.png")
       ->delimiter(',');
@@ -190,8 +203,9 @@ void addStressCommand(CLI::App& app) {
                                                        "shared among its ranks)")
       ->capture_default_str();
   stress->add_option("--out,-o", options->out_dir, "output directory")->capture_default_str();
-  stress->add_option("--worst", options->worst, "save this many worst trials")->capture_default_str()->check(
-      CLI::NonNegativeNumber);
+  stress->add_option("--worst", options->worst, "save this many worst trials")
+      ->capture_default_str()
+      ->check(integerIn(0, std::numeric_limits<int>::max()));
   stress->add_option("--min-success", options->min_success, "fail (exit 1) when a success rate is below this")
       ->check(CLI::Range(0.0, 1.0));
   stress->add_flag("--progress", options->progress, "progress bar on stderr even when it is not a terminal");

@@ -1,4 +1,5 @@
 #include "tools/cli/sim_options.h"
+#include "tools/cli/number_checks.h"
 
 #include <iostream>
 #include <string>
@@ -17,15 +18,13 @@ void addRecordingOptions(CLI::App& command, sim::RecordingOptions& options, bool
   if (with_out_dir) command.add_option("--out", options.frames_dir, "write PNG frames into this folder");
   command.add_option("--video", options.video, "encode an MP4 video (needs ffmpeg)");
   command.add_option("--camera", options.camera, "camera preset: oblique, front, top, side:ROBOT")->capture_default_str();
-  command.add_option("--fps", options.fps, "frames per second of simulated time")->capture_default_str();
-  const auto plan_time = [](const std::string& text) {
-    double t = -1.0;
-    return CLI::detail::lexical_cast(text, t) && t >= 0.0 ? std::string() : "must be a plan time >= 0 [s], got " + text;
-  };
-  command.add_option("--from", options.from, "record from this plan time on [s] (the run is simulated from the start)")
-      ->check(plan_time)
+  command.add_option("--fps", options.fps, "frames per second of simulated time")
+      ->check(positiveNumber())
       ->capture_default_str();
-  command.add_option("--until", options.until, "record up to this plan time [s] (default: the end)")->check(plan_time);
+  command.add_option("--from", options.from, "record from this plan time on [s] (the run is simulated from the start)")
+      ->check(nonNegativeNumber())
+      ->capture_default_str();
+  command.add_option("--until", options.until, "record up to this plan time [s] (default: the end)")->check(nonNegativeNumber());
   command.add_option("--width", options.width, "image width [px]")->capture_default_str();
   command.add_option("--height", options.height, "image height [px]")->capture_default_str();
   auto* eye = command.add_option("--eye", options.eye, "custom camera position X Y Z [m] (world)")->expected(3);
