@@ -2,20 +2,16 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 
 #include <Eigen/Dense>
 
 #include "core/kinematics.h"
+#include "core/number_text.h"
 
 namespace dashbed::controllers {
 
 std::string describeTrip(const ProtectiveStopTrip& trip, const std::string& joint_name) {
-  const auto text = [](double x) {
-    char buffer[32];
-    std::snprintf(buffer, sizeof buffer, "%.4g", x);
-    return std::string(buffer);
-  };
+  const auto text = [](double x) { return core::significantText(x, 4); };
   switch (trip.cause) {
     case ProtectiveStopTrip::Cause::kExternalTorque:
       return joint_name + " external torque " + text(trip.value) + " Nm > " + text(trip.limit) + " Nm";

@@ -23,6 +23,33 @@ struct Observation {
   std::vector<std::vector<char>> moving;  // [robot][step]: the reference moves
   std::vector<std::vector<int>> gripped;  // [robot][step]: object both pads touch, or -1
   std::vector<Eigen::Vector3d> final_position;  // per object, at the end
+
+  /// First step at or after plan time `time`.
+  std::size_t stepAt(double time) const {
+    return static_cast<std::size_t>(std::lower_bound(t.begin(), t.end(), time - 1e-9) - t.begin());
+  }
+  /// Start of robot r's last motion before step k.
+  double motionBefore(std::size_t r, std::size_t k) const {
+    const std::vector<char>& arm = moving[r];
+    k = std::min(k, arm.size() - 1);
+    while (k > 0 && !arm[k]) --k;
+    while (k > 0 && arm[k - 1]) --k;
+    return t[k];
+  }
+  /// End of robot r's first motion after step k.
+  double motionAfter(std::size_t r, std::size_t k) const {
+    const std::vector<char>& arm = moving[r];
+    while (k < arm.size() && !arm[k]) ++k;
+    while (k < arm.size() && arm[k]) ++k;
+    return t[std::min(k, arm.size() - 1)];
+  }
+  /// The object robot r's pads both touch within the close window from step k, before `until`.
+  int closedOn(std::size_t r, std::size_t k, double until) const {
+    for (; k < t.size() && t[k] < until; ++k) {
+      if (gripped[r][k] >= 0) return gripped[r][k];
+    }
+    return -1;
+  }
 };
 
 Observation observe(const core::World& world, const core::RobotSet& robots, const core::Plan& plan) {
@@ -76,54 +103,12 @@ Observation observe(const core::World& world, const core::RobotSet& robots, cons
   return seen;
 }
 
-class Inference {
- public:
-  Inference(const core::World& world, const Observation& seen) : world_(world), seen_(seen) {}
-
-  /// First step at or after plan time t.
-  std::size_t stepAt(double t) const {
-    return static_cast<std::size_t>(std::lower_bound(seen_.t.begin(), seen_.t.end(), t - 1e-9) - seen_.t.begin());
-  }
-  /// Start of robot r's last motion before step k.
-  double motionBefore(std::size_t r, std::size_t k) const {
-    const std::vector<char>& moving = seen_.moving[r];
-    k = std::min(k, moving.size() - 1);
-    while (k > 0 && !moving[k]) --k;
-    while (k > 0 && moving[k - 1]) --k;
-    return seen_.t[k];
-  }
-  /// End of robot r's first motion after step k.
-  double motionAfter(std::size_t r, std::size_t k) const {
-    const std::vector<char>& moving = seen_.moving[r];
-    while (k < moving.size() && !moving[k]) ++k;
-    while (k < moving.size() && moving[k]) ++k;
-    return seen_.t[std::min(k, moving.size() - 1)];
-  }
-  /// The object robot r's pads both touch within the close window from step k, before `until`.
-  int closedOn(std::size_t r, std::size_t k, double until) const {
-    for (; k < seen_.t.size() && seen_.t[k] < until; ++k) {
-      if (seen_.gripped[r][k] >= 0) return seen_.gripped[r][k];
-    }
-    return -1;
-  }
-
-  const core::World& world_;
-  const Observation& seen_;
-};
-
-int robotIndex(const core::World& world, const std::string& name) {
-  for (std::size_t r = 0; r < world.robots.size(); ++r) {
-    if (world.robots[r].name == name) return static_cast<int>(r);
-  }
-  return -1;
-}
 
 }  // namespace
 
 std::vector<core::PlanAction> inferActions(const core::World& world, const core::RobotSet& robots,
                                            const core::Plan& plan) {
   const Observation seen = observe(world, robots, plan);
-  const Inference inference(world, seen);
   std::vector<core::GripperCommand> commands = plan.gripper;
   std::stable_sort(commands.begin(), commands.end(),
                    [](const core::GripperCommand& a, const core::GripperCommand& b) { return a.t < b.t; });
@@ -134,10 +119,10 @@ std::vector<core::PlanAction> inferActions(const core::World& world, const core:
   std::vector<std::size_t> places;  // indices in `actions`
   for (std::size_t i = 0; i < commands.size(); ++i) {
     const core::GripperCommand& command = commands[i];
-    const int ri = robotIndex(world, command.robot);
-    if (ri < 0) continue;
-    const auto r = static_cast<std::size_t>(ri);
-    const std::size_t k = inference.stepAt(command.t);
+    const core::RobotSpec* spec = world.findRobot(command.robot);
+    if (spec == nullptr) continue;
+    const auto r = static_cast<std::size_t>(spec - world.robots.data());
+    const std::size_t k = seen.stepAt(command.t);
     if (k >= seen.t.size()) continue;
     if (command.action == core::GripperAction::kClose) {
       double until = command.t + kCloseWindow;
@@ -147,13 +132,13 @@ std::vector<core::PlanAction> inferActions(const core::World& world, const core:
           break;
         }
       }
-      const int o = inference.closedOn(r, k, until);
+      const int o = seen.closedOn(r, k, until);
       if (o < 0) continue;
       const std::string& object = world.objects[static_cast<std::size_t>(o)].name;
       const auto giver = std::find(held.begin(), held.end(), o);
       core::PlanAction action;
       action.object = object;
-      action.start = inference.motionBefore(r, k);
+      action.start = seen.motionBefore(r, k);
       if (giver != held.end() && static_cast<std::size_t>(giver - held.begin()) != r) {
         const auto g = static_cast<std::size_t>(giver - held.begin());
         action.type = core::ActionType::kHandoff;
@@ -164,21 +149,21 @@ std::vector<core::PlanAction> inferActions(const core::World& world, const core:
       } else {
         action.type = core::ActionType::kPick;
         action.robot = command.robot;
-        action.end = inference.motionAfter(r, k);
+        action.end = seen.motionAfter(r, k);
       }
       actions.push_back(action);
       held[r] = o;
     } else if (held[r] >= 0) {
       if (receiving[r]) {
-        actions[*receiving[r]].end = inference.motionAfter(r, k);
+        actions[*receiving[r]].end = seen.motionAfter(r, k);
         receiving[r].reset();
       } else {
         core::PlanAction action;
         action.type = core::ActionType::kPlace;
         action.robot = command.robot;
         action.object = world.objects[static_cast<std::size_t>(held[r])].name;
-        action.start = inference.motionBefore(r, k);
-        action.end = inference.motionAfter(r, k);
+        action.start = seen.motionBefore(r, k);
+        action.end = seen.motionAfter(r, k);
         places.push_back(actions.size());
         actions.push_back(action);
       }
@@ -192,11 +177,9 @@ std::vector<core::PlanAction> inferActions(const core::World& world, const core:
       return a.type == core::ActionType::kPick && a.object == place.object && a.start > place.start;
     });
     if (picked_again) continue;
-    const auto o = static_cast<std::size_t>(
-        std::find_if(world.objects.begin(), world.objects.end(),
-                     [&](const core::ObjectSpec& spec) { return spec.name == place.object; }) -
-        world.objects.begin());
-    if (const core::Region* goal = world.goalRegionOf(world.objects[o])) {
+    const core::ObjectSpec& object = *world.findObject(place.object);
+    const auto o = static_cast<std::size_t>(&object - world.objects.data());
+    if (const core::Region* goal = world.goalRegionOf(object)) {
       place.region = goal->name;
       continue;
     }

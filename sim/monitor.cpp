@@ -786,8 +786,8 @@ struct Monitor::State {
       execution.max_tracking_error = stats.max_tracking_error;
       execution.torque_saturation = stats.steps > 0 ? static_cast<double>(stats.saturated_steps) / static_cast<double>(stats.steps) : 0.0;
       execution.max_effort_ratio = stats.max_effort_ratio;
-      execution.max_tcp_force = stats.max_tcp_force;
-      execution.max_external_torque_ratio = stats.max_external_torque_ratio;
+      execution.max_tcp_force = executor.collisionDetection(static_cast<int>(r)).maxTcpForce();
+      execution.max_external_torque_ratio = executor.collisionDetection(static_cast<int>(r)).maxTorqueRatio();
       report.robots.push_back(execution);
     }
     for (const ExecutionEvent& event : events) {

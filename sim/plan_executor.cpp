@@ -74,21 +74,37 @@ void PlanExecutor::step() {
   }
   const std::size_t n = world.robots.size();
   std::vector<Eigen::VectorXd> q(n), qd(n);
+  std::vector<core::JointReference> ref(n);
+  for (std::size_t r = 0; r < n; ++r) {
+    q[r] = sim_.jointPositions(static_cast<int>(r));
+    qd[r] = sim_.jointVelocities(static_cast<int>(r));
+    ref[r] = reference(static_cast<int>(r));
+  }
+  // the controller's watch on the path: a joint too far from its reference stops the cell
+  for (std::size_t r = 0; r < n && !stop_; ++r) {
+    for (int j = 0; j < 6 && !stop_; ++j) {
+      const double deviation = std::abs(ref[r].q[j] - q[r][j]);
+      if (deviation > deviation_limit_) {
+        stopCell(static_cast<int>(r), {controllers::ProtectiveStopTrip::Cause::kPathDeviation, j, deviation,
+                                       deviation_limit_});
+      }
+    }
+  }
+  if (stop_) {
+    for (std::size_t r = 0; r < n; ++r) ref[r] = reference(static_cast<int>(r));
+  }
   std::vector<core::Vector6> tau(n);
   for (std::size_t r = 0; r < n; ++r) {
     const int ri = static_cast<int>(r);
-    q[r] = sim_.jointPositions(ri);
-    qd[r] = sim_.jointVelocities(ri);
-    const core::JointReference ref = reference(ri);
     const core::Payload* payload = payloads_[r] ? &*payloads_[r] : nullptr;
-    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q[r], qd[r], ref, payload);
+    const controllers::ArmTorques torques = arm_controllers_[r]->compute(q[r], qd[r], ref[r], payload);
     tau[r] = torques.tau;
     sim_.setArmTorques(ri, torques.tau);
     sim_.setFingerServo(ri, grippers_[r].servo(0.5 * (q[r][6] + q[r][7])));
 
     TrackingStats& stats = stats_[r];
     for (int j = 0; j < 6; ++j) {
-      stats.max_tracking_error = std::max(stats.max_tracking_error, std::abs(ref.q[j] - q[r][j]));
+      stats.max_tracking_error = std::max(stats.max_tracking_error, std::abs(ref[r].q[j] - q[r][j]));
     }
     stats.max_effort_ratio = std::max(stats.max_effort_ratio, torques.max_effort_ratio);
     if (torques.saturated) ++stats.saturated_steps;
@@ -96,22 +112,10 @@ void PlanExecutor::step() {
   }
   sim_.step();
   for (std::size_t r = 0; r < n; ++r) {
-    const int ri = static_cast<int>(r);
     const core::Payload* payload = payloads_[r] ? &*payloads_[r] : nullptr;
     controllers::CollisionDetector& detector = detectors_[r];
-    detector.update(q[r], qd[r], tau[r], sim_.jointVelocities(ri), payload);
-    stats_[r].max_tcp_force = detector.maxTcpForce();
-    stats_[r].max_external_torque_ratio = detector.maxTorqueRatio();
-    if (!stop_ && detector.trip()) stopCell(ri, *detector.trip());
-    // the controller's watch on the path: a joint too far from its reference stops the cell
-    const core::JointReference ref = reference(ri);
-    const Eigen::VectorXd q_now = sim_.jointPositions(ri);
-    for (int j = 0; j < 6 && !stop_; ++j) {
-      const double deviation = std::abs(ref.q[j] - q_now[j]);
-      if (deviation > deviation_limit_) {
-        stopCell(ri, {controllers::ProtectiveStopTrip::Cause::kPathDeviation, j, deviation, deviation_limit_});
-      }
-    }
+    detector.update(q[r], qd[r], tau[r], sim_.jointVelocities(static_cast<int>(r)), payload);
+    if (!stop_ && detector.trip()) stopCell(static_cast<int>(r), *detector.trip());
   }
 }
 

@@ -22,8 +22,6 @@ struct TrackingStats {
   long saturated_steps = 0;         ///< steps with some arm joint at its effort limit
   long steps = 0;
   double max_effort_ratio = 0.0;
-  double max_tcp_force = 0.0;              ///< [N] largest estimated external TCP force
-  double max_external_torque_ratio = 0.0;  ///< largest estimated external joint torque over its limit
 };
 
 /// A protective stop: robot `robot`'s collision detection tripped at plan time `t`.
@@ -51,11 +49,11 @@ class PlanExecutor {
   /// closes on the object of a pick or of a handoff it receives (per the plan's actions), the
   /// object's mass and inertia (world file) where the object sits in the gripper then; in a
   /// handoff the receiver takes it over when the giver opens. Opening drops it.
-  /// After the step each arm's collision detection judges the external load, and each arm
-  /// joint's distance from its reference is held to checks.tracking_error_limit (a UR stops
-  /// when its position deviates from the path). The first trip is a protective stop of the
-  /// cell: from then on every robot holds the configuration it has and no gripper command is
-  /// carried out.
+  /// Before the step each arm joint's distance from its reference is held to
+  /// checks.tracking_error_limit (a UR stops when its position deviates from the path); after
+  /// it each arm's collision detection judges the external load. The first trip is a
+  /// protective stop of the cell: from then on every robot holds the configuration it has and
+  /// no gripper command is carried out.
   void step();
 
   /// The cell's protective stop, once one happened.
@@ -65,6 +63,8 @@ class PlanExecutor {
   core::JointReference reference(int r) const;
   const controllers::HandeController& gripper(int r) const { return grippers_[r]; }
   const TrackingStats& tracking(int r) const { return stats_[r]; }
+  /// Robot r's collision detection (its largest estimates so far).
+  const controllers::CollisionDetector& collisionDetection(int r) const { return detectors_[r]; }
   /// The payload robot r's arm controller compensates now (see step), if any.
   const std::optional<core::Payload>& payload(int r) const { return payloads_[r]; }
 

@@ -61,7 +61,7 @@ void runSim(const SimOptions& options) {
   }
   const bool foreign = !options.trajectories.empty();
   const core::Plan plan = foreign ? foreignPlan(options, loaded) : core::loadPlanFile(options.plan_file);
-  const std::string plan_name = foreign ? options.trajectories.front().substr(options.trajectories.front().find('=') + 1)
+  const std::string plan_name = foreign ? robotAndFile(options.trajectories.front(), "--trajectory").second
                                         : options.plan_file;
   const sim::RecordedRun run = sim::checkPlan(*loaded.world, *loaded.robots, plan, plan_name, options.outputs);
   printRun(run, options.outputs, options.quiet);

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <iostream>
 #include <thread>
+#include <tuple>
 
 #include "core/asset_paths.h"
 #include "core/number_text.h"
@@ -177,18 +178,13 @@ void addStressCommand(CLI::App& app) {
   stress->add_option("--seed", s.seed, "campaign seed; trial i uses a seed mixed from it and i")
       ->check(unsigned64())
       ->capture_default_str();
-  stress->add_option("--sigma-xy", s.sigmas.xy, "std dev of the x and y offsets [m]")
-      ->check(nonNegativeNumber())
-      ->capture_default_str();
-  stress->add_option("--sigma-yaw", s.sigmas.yaw, "std dev of the yaw offset [rad]")
-      ->check(nonNegativeNumber())
-      ->capture_default_str();
-  stress->add_option("--sigma-mass", s.sigmas.mass, "std dev of log(mass scale) [-]")
-      ->check(nonNegativeNumber())
-      ->capture_default_str();
-  stress->add_option("--sigma-friction", s.sigmas.friction, "std dev of log(friction scale) [-]")
-      ->check(nonNegativeNumber())
-      ->capture_default_str();
+  for (const auto& [name, sigma, help] :
+       {std::tuple("--sigma-xy", &s.sigmas.xy, "std dev of the x and y offsets [m]"),
+        std::tuple("--sigma-yaw", &s.sigmas.yaw, "std dev of the yaw offset [rad]"),
+        std::tuple("--sigma-mass", &s.sigmas.mass, "std dev of log(mass scale) [-]"),
+        std::tuple("--sigma-friction", &s.sigmas.friction, "std dev of log(friction scale) [-]")}) {
+    stress->add_option(name, *sigma, help)->check(nonNegativeNumber())->capture_default_str();
+  }
   stress->add_option("--sweep", s.sweep_xy, "sweep sigma_xy over these increasing values [m] (comma-separated); "
                                             "writes OUT/sweep.png")
       ->delimiter(',');

@@ -6,10 +6,11 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <sstream>
 #include <string>
 
 #include <CLI/CLI.hpp>
+
+#include "core/number_text.h"
 
 namespace dashbed::tools {
 
@@ -42,9 +43,7 @@ inline CLI::Validator unsigned64() {
 
 /// A finite number above `bound` (or at least it, with `or_equal`).
 inline CLI::Validator finiteAbove(double bound, bool or_equal) {
-  std::ostringstream bound_text;
-  bound_text << bound;
-  const std::string what = std::string("a finite number ") + (or_equal ? ">= " : "> ") + bound_text.str();
+  const std::string what = std::string("a finite number ") + (or_equal ? ">= " : "> ") + core::shortestText(bound);
   return CLI::Validator(
       [bound, or_equal, what](std::string& text) {
         double value = 0.0;

@@ -71,8 +71,8 @@ std::array<double, 6> yamlJoints(const YAML::Node& list, const std::array<std::s
   return values;
 }
 
-YAML::Node loadYaml(const std::string& file) {
-  const std::string text = core::readTextFile<ForeignPlanError>(file, "trajectory");
+YAML::Node loadYaml(const std::string& file, const std::string& kind) {
+  const std::string text = core::readTextFile<ForeignPlanError>(file, kind);
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
@@ -81,7 +81,7 @@ YAML::Node loadYaml(const std::string& file) {
 }
 
 std::vector<core::TrajectoryPoint> yamlTrajectory(const std::string& file, const Names& names) {
-  YAML::Node root = loadYaml(file);
+  YAML::Node root = loadYaml(file, "trajectory");
   const YAML::Node trajectory = root.IsMap() && root["trajectory"] ? root["trajectory"] : root;
   if (!trajectory.IsMap() || !trajectory["joint_names"] || !trajectory["points"]) {
     fail(file, lineOf(trajectory), "trajectory", "expected a JointTrajectory with joint_names and points");
@@ -119,7 +119,7 @@ std::vector<core::TrajectoryPoint> yamlTrajectory(const std::string& file, const
 }
 
 std::vector<core::GripperCommand> yamlGripper(const std::string& file, const std::string& robot) {
-  YAML::Node root = loadYaml(file);
+  YAML::Node root = loadYaml(file, "gripper timeline");
   if (!root.IsMap() || !root["gripper"] || !root["gripper"].IsSequence()) {
     fail(file, lineOf(root), "gripper", "expected a list of gripper commands under 'gripper'");
   }
