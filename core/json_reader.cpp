@@ -6,22 +6,10 @@
 #include <set>
 #include <vector>
 
+#include "core/input_text.h"
+
 namespace dashbed::core {
 namespace {
-
-// "line L, column C" of a byte offset into text (1-based)
-std::string lineAndColumn(std::string_view text, std::size_t byte) {
-  byte = std::min(byte, text.size());
-  int line = 1;
-  std::size_t line_start = 0;
-  for (std::size_t i = 0; i < byte; ++i) {
-    if (text[i] == '\n') {
-      ++line;
-      line_start = i + 1;
-    }
-  }
-  return "line " + std::to_string(line) + ", column " + std::to_string(byte - line_start + 1);
-}
 
 // nlohmann's message without its "[json.exception.parse_error.101] " prefix
 std::string withoutExceptionId(const std::string& what) {
@@ -33,9 +21,27 @@ std::string withoutExceptionId(const std::string& what) {
 }
 
 /// Thrown by the parser's callback at the first value nested deeper than kMaxJsonNesting.
-struct TooDeep {
-  std::string pointer;
-};
+struct TooDeep {};
+
+// Byte offset of the first '[' or '{' (outside strings) that opens level `depth` + 1.
+std::size_t offsetBeyondDepth(std::string_view text, std::size_t depth) {
+  std::size_t level = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      if (++level > depth) return i;
+    } else if (c == ']' || c == '}') {
+      if (level > 0) --level;
+    }
+  }
+  return text.size();
+}
 
 // Finds the first key that occurs twice in one object (nlohmann keeps the last silently).
 // Runs as the parser's callback; remembers the key's pointer. Throws TooDeep.
@@ -46,7 +52,7 @@ class DuplicateKeyFinder {
     switch (event) {
       case Json::parse_event_t::object_start:
       case Json::parse_event_t::array_start:
-        if (frames_.size() >= kMaxJsonNesting) throw TooDeep{pointer()};
+        if (frames_.size() >= kMaxJsonNesting) throw TooDeep{};
         frames_.push_back({event == Json::parse_event_t::object_start, {}, {}, 0});
         break;
       case Json::parse_event_t::key: {
@@ -97,6 +103,10 @@ class DuplicateKeyFinder {
 
 template <class Json>
 Json parseJsonText(std::string_view text) {
+  if (const std::optional<TextProblem> problem = findTextProblem(text)) {
+    throw JsonProblem{"", "line " + std::to_string(problem->line) + ", column " + std::to_string(problem->column) +
+                              ": " + problem->what};
+  }
   DuplicateKeyFinder<Json> finder;
   Json document;
   try {
@@ -115,8 +125,9 @@ Json parseJsonText(std::string_view text) {
       if (found != std::string_view::npos) what += " at " + lineAndColumn(text, found);
     }
     throw JsonProblem{"", "invalid JSON: " + what};
-  } catch (const TooDeep& deep) {
-    throw JsonProblem{deep.pointer, "nested deeper than " + std::to_string(kMaxJsonNesting) + " levels"};
+  } catch (const TooDeep&) {
+    throw JsonProblem{"", lineAndColumn(text, offsetBeyondDepth(text, kMaxJsonNesting)) + ": nested deeper than " +
+                              std::to_string(kMaxJsonNesting) + " levels"};
   }
   if (finder.duplicate()) throw JsonProblem{*finder.duplicate(), "duplicate key"};
   return document;

@@ -64,6 +64,23 @@ class JsonReader {
     if (!ok) fail(pointer, "expected " + std::string(expected) + ", got " + describeJsonValue(value));
   }
 
+  /// Checks the format version member `key` of a dashbed file of `kind` ("plan", "report"):
+  /// missing (not such a file), not an integer, or another version than `version`.
+  void formatVersion(const Json& document, std::string_view key, int version, std::string_view kind) const {
+    const std::string pointer = jsonPointerAt("", key);
+    const std::string expected = "\"" + std::string(key) + "\": " + std::to_string(version);
+    const auto found = document.find(key);
+    if (found == document.end()) fail(pointer, "missing: not a dashbed " + std::string(kind) + " (expected " + expected + ")");
+    if (!found->is_number_integer()) {
+      fail(pointer, "expected the integer " + std::to_string(version) + ", got " + describeJsonValue(*found) + " " +
+                        found->dump(-1, ' ', false, Json::error_handler_t::replace));
+    }
+    if (found->template get<std::int64_t>() != version) {
+      fail(pointer, "unsupported " + std::string(kind) + " format version " + found->dump() +
+                        " (this build reads version " + std::to_string(version) + ")");
+    }
+  }
+
   /// An object whose keys are all in `allowed`.
   void expectObject(const Json& value, const std::string& pointer,
                     std::initializer_list<std::string_view> allowed) const {

@@ -12,7 +12,7 @@
 #include "core/json_pointer.h"
 #include "core/json_reader.h"
 #include "core/number_text.h"
-#include "core/text_file.h"
+#include "core/input_text.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -185,16 +185,7 @@ Plan readPlan(const PlanReader& reader, const Json& document) {
   if (!document.is_object()) reader.fail("", "expected a JSON object, got " + describeJsonValue(document));
 
   // the version first: a file of another kind or version fails on it, not on its keys
-  const auto version = document.find("dashbed_plan");
-  if (version == document.end()) {
-    reader.fail("/dashbed_plan", "missing: not a dashbed plan (expected \"dashbed_plan\": " +
-                                     std::to_string(kPlanFormatVersion) + ")");
-  }
-  if (!version->is_number_integer() || version->get<std::int64_t>() != kPlanFormatVersion) {
-    reader.fail("/dashbed_plan", "unsupported plan format version " + version->dump() +
-                                     " (this build reads version " +
-                                     std::to_string(kPlanFormatVersion) + ")");
-  }
+  reader.formatVersion(document, "dashbed_plan", kPlanFormatVersion, "plan");
   reader.expectObject(
       document, "",
       {"dashbed_plan", "world", "seed", "robots", "gripper", "actions", "statistics"});

@@ -14,6 +14,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/input_text.h"
 #include "core/world.h"
 
 namespace dashbed::core {
@@ -73,9 +74,9 @@ struct Plan {
 
 /// Bad plan input. The message names the file, the JSON pointer of the field and the problem,
 /// e.g. "plan.json: /robots/0/points/3/t: times must increase (1.2 after 1.5)".
-class PlanError : public std::runtime_error {
+class PlanError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 /// Parses and checks the structure of a plan (types, required fields, version, increasing

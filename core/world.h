@@ -189,6 +189,10 @@ inline constexpr std::array<double, 6> kDefaultRobotHome{0.0, -1.5708, 1.5708,
 /// can be built for.
 inline constexpr std::size_t kMaxRobots = 16;
 
+/// Most fixtures, and most surfaces and regions written, a world may have: every object's start
+/// pose is checked against each of them, so reading stays linear in the number of objects.
+inline constexpr std::size_t kMaxFixtures = 1000;
+
 struct World {
   std::string name;
   std::string description;

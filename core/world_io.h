@@ -6,14 +6,15 @@
 #include <string>
 #include <string_view>
 
+#include "core/input_text.h"
 #include "core/world.h"
 
 namespace dashbed::core {
 
 /// Bad world input. The message starts with "FILE:LINE:COLUMN: FIELD: " and says what is wrong.
-class WorldError : public std::runtime_error {
+class WorldError : public InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using InputError::InputError;
 };
 
 /// "file:line:column" (or just "file" when the line is unknown).

@@ -45,4 +45,20 @@ LoadedWorld validateWorld(World world) {
 
 LoadedWorld loadWorld(const std::filesystem::path& file) { return validateWorld(loadWorldFile(file)); }
 
+void validatePlanForWorld(const Plan& plan, const World& world, const RobotSet& robots,
+                          const std::string& plan_file) {
+  if (robots.size() == 0) throw PlanError(plan_file + ": the world has no robots");
+  const RobotModel& model = *robots[0].model;
+  std::array<std::string, 6> names;
+  std::array<double, 6> lower{}, upper{}, velocity{};
+  for (int i = 0; i < 6; ++i) {
+    const JointModel& joint = model.joints()[model.movableJoints()[i]];
+    names[i] = joint.name;
+    lower[i] = joint.lower;
+    upper[i] = joint.upper;
+    velocity[i] = joint.max_velocity;
+  }
+  validatePlan(plan, world, names, lower, upper, velocity, plan_file);
+}
+
 }  // namespace dashbed::core

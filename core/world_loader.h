@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <memory>
 
+#include "core/plan.h"
 #include "core/reach.h"
 #include "core/robot_set.h"
 #include "core/world.h"
@@ -24,5 +25,9 @@ LoadedWorld loadWorld(const std::filesystem::path& file);
 /// The same for a world already in memory (e.g. from a scenario generator). A world whose
 /// fixtures have no derived geometry yet gets it first (deriveFixtureGeometry), as parsing does.
 LoadedWorld validateWorld(World world);
+
+/// validatePlan with the arm joint names, limits and speeds of the world's robot model.
+/// Throws PlanError naming `plan_file`.
+void validatePlanForWorld(const Plan& plan, const World& world, const RobotSet& robots, const std::string& plan_file);
 
 }  // namespace dashbed::core

@@ -14,6 +14,8 @@
 #include <initializer_list>
 #include <optional>
 #include <sstream>
+#include <unordered_map>
+#include <unordered_set>
 #include <string>
 #include <system_error>
 #include <utility>
@@ -23,9 +25,10 @@
 
 #include "core/geometry.h"
 #include "core/hande.h"
-#include "core/text_file.h"
+#include "core/input_text.h"
 #include "core/world_io.h"
 #include "core/world_yaml_detail.h"
+#include "core/yaml_layout.h"
 
 namespace dashbed::core {
 
@@ -36,6 +39,16 @@ std::string formatLocation(const SourceLocation& where) {
 }
 
 namespace {
+
+/// Lists and maps nested deeper than this are refused (a world file nests 5 levels).
+constexpr std::size_t kMaxYamlNesting = 64;
+
+YAML::Mark markAt(int line, int column) {
+  YAML::Mark mark;
+  mark.line = line;
+  mark.column = column;
+  return mark;
+}
 
 using world_yaml::formatNumber;
 
@@ -126,17 +139,24 @@ struct GoalUse {
 
 class Reader {
  public:
-  explicit Reader(std::string file) : file_(std::move(file)) {}
+  /// Reads a file named `file` in messages, whose aliases are in `layout`.
+  Reader(std::string file, world_yaml::YamlLayout layout) : file_(std::move(file)), layout_(std::move(layout)) {}
 
   SourceLocation locate(const YAML::Mark& mark) const {
     if (mark.is_null()) return {file_, 0, 0};
     return {file_, mark.line + 1, mark.column + 1};
   }
 
+  /// Fails at `mark`; a field written through an alias fails at the alias, naming the anchor.
   [[noreturn]] void fail(const YAML::Mark& mark, const std::string& path,
                          const std::string& message) const {
-    throw WorldError(formatLocation(locate(mark)) + ": " + (path.empty() ? "(top level)" : path) +
-                     ": " + message);
+    const std::string field = path.empty() ? "(top level)" : path;
+    if (const world_yaml::AliasUse* alias = aliasAbove(path)) {
+      const SourceLocation at{file_, alias->mark.line + 1, alias->mark.column + 1};
+      throw WorldError(formatLocation(at) + ": " + field + ": " + message + " (the value of alias *" +
+                       alias->anchor + ", anchored at line " + std::to_string(alias->anchor_mark.line + 1) + ")");
+    }
+    throw WorldError(formatLocation(locate(mark)) + ": " + field + ": " + message);
   }
   [[noreturn]] void fail(const Field& field, const std::string& message) const {
     fail(field.mark(), field.path, message);
@@ -159,15 +179,9 @@ class Reader {
                       "keys must be plain names, got " + describe(key));
         }
         const std::string path = (field.path.empty() ? "" : field.path + ".") + key.Scalar();
-        for (const auto& [name, previous] : entries_) {
-          if (name == key.Scalar()) {
-            reader.fail(key.Mark(), path,
-                        "duplicate key (first at line " + std::to_string(previous.key_mark.line + 1) +
-                            ")");
-          }
-        }
         entries_.emplace_back(key.Scalar(), Field{value, key.Mark(), path});
       }
+      failOnDuplicateKey();
     }
 
     void allowOnly(std::initializer_list<std::string_view> allowed) const {
@@ -190,6 +204,24 @@ class Reader {
       reader_.fail(field_.mark(), childPath(key), "missing (" + why + ")");
     }
 
+    // the first key (in the text's order) written a second time; sorting keeps it linear-logarithmic
+    void failOnDuplicateKey() const {
+      std::vector<std::size_t> order(entries_.size());
+      for (std::size_t i = 0; i < order.size(); ++i) order[i] = i;
+      std::stable_sort(order.begin(), order.end(),
+                       [&](std::size_t a, std::size_t b) { return entries_[a].first < entries_[b].first; });
+      std::optional<std::pair<std::size_t, std::size_t>> duplicate;  // (first, second) entries
+      for (std::size_t k = 1; k < order.size(); ++k) {
+        if (entries_[order[k]].first != entries_[order[k - 1]].first) continue;
+        if (!duplicate || order[k] < duplicate->second) duplicate = {order[k - 1], order[k]};
+      }
+      if (!duplicate) return;
+      const Field& second = entries_[duplicate->second].second;
+      reader_.fail(second.key_mark, second.path,
+                   "duplicate key (first at line " +
+                       std::to_string(entries_[duplicate->first].second.key_mark.line + 1) + ")");
+    }
+
     std::string childPath(std::string_view key) const {
       return (field_.path.empty() ? "" : field_.path + ".") + std::string(key);
     }
@@ -207,6 +239,14 @@ class Reader {
   std::string text(const Field& field) const;
   std::string identifier(const Field& field) const;
   std::vector<Field> list(const Field& field) const;
+  /// A list of at most `most` items.
+  std::vector<Field> boundedList(const Field& field, std::size_t most) const {
+    std::vector<Field> items = list(field);
+    if (items.size() > most) {
+      fail(field, "at most " + std::to_string(most) + " entries, not " + std::to_string(items.size()));
+    }
+    return items;
+  }
   std::vector<double> numbers(const Field& field, std::size_t count) const;
   Eigen::Vector3d vector3(const Field& field) const;
   Color color(const Field& field) const;
@@ -243,8 +283,14 @@ class Reader {
   void checkStartPoses(const World& world) const;
   void checkRobotBases(const World& world) const;
 
+  const world_yaml::AliasUse* aliasAbove(const std::string& path) const {
+    return path.empty() ? nullptr : world_yaml::aliasAbove(layout_, path);
+  }
+
   std::string file_;
+  world_yaml::YamlLayout layout_;
   std::vector<NameUse> names_;
+  std::unordered_map<std::string, std::size_t> name_index_;  // into names_
   std::vector<GoalUse> goal_uses_;
   std::vector<Field> object_poses_;
   std::vector<Field> robot_bases_;
@@ -409,11 +455,11 @@ std::array<double, N> Reader::nonNegativeArray(const Field& field) const {
 std::string Reader::name(const MapView& map) {
   const Field field = map.require("name");
   std::string value = identifier(field);
-  for (const NameUse& use : names_) {
-    if (use.name == value) {
-      fail(field, "duplicate name '" + value + "' (also " + use.path + " at line " +
-                      std::to_string(use.mark.line + 1) + ")");
-    }
+  const auto [earlier, first] = name_index_.emplace(value, names_.size());
+  if (!first) {
+    const NameUse& use = names_[earlier->second];
+    fail(field, "duplicate name '" + value + "' (also " + use.path + " at line " +
+                    std::to_string(use.mark.line + 1) + ")");
   }
   names_.push_back({value, field.path, field.mark()});
   return value;
@@ -722,13 +768,13 @@ World Reader::read(const YAML::Node& root) {
   }
 
   if (const auto f = map.get("fixtures")) {
-    for (const Field& item : list(*f)) world.fixtures.push_back(fixture(item));
+    for (const Field& item : boundedList(*f, kMaxFixtures)) world.fixtures.push_back(fixture(item));
   }
   if (const auto f = map.get("surfaces")) {
-    for (const Field& item : list(*f)) world.surfaces.push_back(surface(item));
+    for (const Field& item : boundedList(*f, kMaxFixtures)) world.surfaces.push_back(surface(item));
   }
   if (const auto f = map.get("regions")) {
-    for (const Field& item : list(*f)) world.regions.push_back(region(item));
+    for (const Field& item : boundedList(*f, kMaxFixtures)) world.regions.push_back(region(item));
   }
   if (const auto f = map.get("objects")) {
     for (const Field& item : list(*f)) world.objects.push_back(object(item));
@@ -764,18 +810,28 @@ void Reader::checkRobotBases(const World& world) const {
 }
 
 void Reader::checkGoals(const World& world) const {
+  // indexes by name, so that a world with many objects and goals is checked in linear time
+  std::unordered_map<std::string_view, const ObjectSpec*> objects;
+  std::unordered_set<std::string_view> classes;
+  for (const ObjectSpec& object : world.objects) {
+    objects.emplace(object.name, &object);
+    classes.insert(object.object_class);
+  }
+  std::unordered_map<std::string_view, const Region*> regions;
+  for (const Region& region : world.regions) regions.emplace(region.name, &region);
+  // one goal per object and per class (an object goal may override its class's goal)
+  std::unordered_map<std::string_view, std::size_t> object_goals, class_goals;
+
   for (std::size_t i = 0; i < goal_uses_.size(); ++i) {
     const GoalUse& use = goal_uses_[i];
     const Goal& goal = world.goals[i];
-    if (use.object && !world.findObject(goal.object)) {
+    if (use.object && !objects.contains(goal.object)) {
       fail(*use.object, "unknown object '" + goal.object + "'");
     }
-    if (use.object_class) {
-      const bool used = std::any_of(world.objects.begin(), world.objects.end(),
-                                    [&](const ObjectSpec& o) { return o.object_class == goal.object_class; });
-      if (!used) fail(*use.object_class, "no object has class '" + goal.object_class + "'");
+    if (use.object_class && !classes.contains(goal.object_class)) {
+      fail(*use.object_class, "no object has class '" + goal.object_class + "'");
     }
-    if (!world.findRegion(goal.region)) {
+    if (!regions.contains(goal.region)) {
       std::string hint;
       if (const FixtureSpec* fixture = world.findFixture(goal.region)) {
         hint = " ('" + goal.region + "' is a " +
@@ -787,60 +843,104 @@ void Reader::checkGoals(const World& world) const {
       }
       fail(use.region, "unknown region '" + goal.region + "'" + hint);
     }
-    // one goal per object and per class (an object goal may override its class's goal)
-    for (std::size_t j = 0; j < i; ++j) {
-      const Goal& earlier = world.goals[j];
-      const bool same_object = !goal.object.empty() && earlier.object == goal.object;
-      const bool same_class = !goal.object_class.empty() && earlier.object_class == goal.object_class;
-      if (same_object || same_class) {
-        const Field& field = same_object ? *use.object : *use.object_class;
-        fail(field, std::string(same_object ? "object '" : "class '") +
-                        (same_object ? goal.object : goal.object_class) + "' already has a goal (" +
-                        goal_uses_[j].path + " at line " +
-                        std::to_string(goal_uses_[j].mark.line + 1) + ")");
-      }
+    const bool by_object = !goal.object.empty();
+    auto& goals_by_name = by_object ? object_goals : class_goals;
+    const std::string& name = by_object ? goal.object : goal.object_class;
+    const auto [earlier, first] = goals_by_name.emplace(name, i);
+    if (!first) {
+      fail(by_object ? *use.object : *use.object_class,
+           std::string(by_object ? "object '" : "class '") + name + "' already has a goal (" +
+               goal_uses_[earlier->second].path + " at line " +
+               std::to_string(goal_uses_[earlier->second].mark.line + 1) + ")");
     }
   }
   // an object is in its region when its centre is (core::distanceOutside): standing on the
   // region's floor as at its start (upright, yaw only), its centre must be below the top
   for (const ObjectSpec& object : world.objects) {
-    const Region* region = world.goalRegionOf(object);
-    if (region == nullptr || object.size.z() / 2 <= region->size.z() + 1e-9) continue;
-    const auto goal = static_cast<std::size_t>(world.goalOf(object) - world.goals.data());
+    std::size_t goal = 0;
+    if (const auto by_object = object_goals.find(object.name); by_object != object_goals.end()) {
+      goal = by_object->second;
+    } else if (const auto by_class = class_goals.find(object.object_class);
+               !object.object_class.empty() && by_class != class_goals.end()) {
+      goal = by_class->second;
+    } else {
+      continue;
+    }
+    const Region& region = *regions.at(world.goals[goal].region);
+    if (object.size.z() / 2 <= region.size.z() + 1e-9) continue;
     fail(goal_uses_[goal].region, "object '" + object.name + "' is " + millimetres(object.size.z()) +
-                                      " tall: standing in region '" + region->name + "' (" +
-                                      millimetres(region->size.z()) +
-                                      " high) its centre would be above it, and an object is in a region when its "
-                                      "centre is");
+                                              " tall: standing in region '" + region.name + "' (" +
+                                              millimetres(region.size.z()) +
+                                              " high) its centre would be above it, and an object is in a region "
+                                              "when its centre is");
   }
 }
 
+// Objects closer than this many grid cells are checked for overlap: a cell is as wide as the
+// widest object, so two objects whose centres lie further apart than one cell cannot touch.
+struct ObjectGrid {
+  double cell = 0.0;
+  std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;
+
+  std::int64_t index(double x) const {
+    return static_cast<std::int64_t>(std::clamp(std::floor(x / cell), -2.0e9, 2.0e9));
+  }
+  static std::uint64_t key(std::int64_t ix, std::int64_t iy) {
+    return (static_cast<std::uint64_t>(ix) << 32) ^ static_cast<std::uint64_t>(iy & 0xffffffff);
+  }
+};
+
 void Reader::checkStartPoses(const World& world) const {
   std::vector<Box> object_boxes;
+  object_boxes.reserve(world.objects.size());
+  ObjectGrid grid;
+  for (const ObjectSpec& object : world.objects) {
+    const Box box{object.X_WO, object.size};
+    object_boxes.push_back(box);
+    const Eigen::Vector3d extent = rotatedBoxExtent(box.X_WB.linear(), box.size);
+    grid.cell = std::max({grid.cell, extent.x(), extent.y(), 1e-3});
+  }
+  std::vector<std::pair<const FixtureSpec*, Box>> fixture_parts;
+  for (const FixtureSpec& fixture : world.fixtures) {
+    for (const Box& part : fixture.boxes) fixture_parts.emplace_back(&fixture, part);
+  }
+
   for (std::size_t i = 0; i < world.objects.size(); ++i) {
     const ObjectSpec& object = world.objects[i];
     const Field& pose = object_poses_[i];
-    const Box box{object.X_WO, object.size};
+    const Box& box = object_boxes[i];
 
-    for (const FixtureSpec& fixture : world.fixtures) {
-      for (const Box& part : fixture.boxes) {
-        const double depth = boxPenetrationDepth(box, part);
-        if (depth > kMaxPenetration) {
-          fail(pose, "'" + object.name + "' penetrates fixture '" + fixture.name + "' by " +
-                         millimetres(depth) + " (at most " + millimetres(kMaxPenetration) +
-                         " allowed)");
+    for (const auto& [fixture, part] : fixture_parts) {
+      const double depth = boxPenetrationDepth(box, part);
+      if (depth > kMaxPenetration) {
+        fail(pose, "'" + object.name + "' penetrates fixture '" + fixture->name + "' by " +
+                       millimetres(depth) + " (at most " + millimetres(kMaxPenetration) + " allowed)");
+      }
+    }
+    // the earliest object it overlaps, among those in the neighbouring cells
+    const std::int64_t ix = grid.index(box.X_WB.translation().x());
+    const std::int64_t iy = grid.index(box.X_WB.translation().y());
+    std::optional<std::size_t> overlapped;
+    double overlap = 0.0;
+    for (std::int64_t dx = -1; dx <= 1; ++dx) {
+      for (std::int64_t dy = -1; dy <= 1; ++dy) {
+        const auto cell = grid.cells.find(ObjectGrid::key(ix + dx, iy + dy));
+        if (cell == grid.cells.end()) continue;
+        for (const std::size_t j : cell->second) {
+          if (overlapped && *overlapped < j) continue;
+          const double depth = boxPenetrationDepth(box, object_boxes[j]);
+          if (depth > kMaxPenetration) {
+            overlapped = j;
+            overlap = depth;
+          }
         }
       }
     }
-    for (std::size_t j = 0; j < i; ++j) {
-      const double depth = boxPenetrationDepth(box, object_boxes[j]);
-      if (depth > kMaxPenetration) {
-        fail(pose, "'" + object.name + "' overlaps object '" + world.objects[j].name + "' (line " +
-                       std::to_string(object_poses_[j].mark().line + 1) + ") by " +
-                       millimetres(depth));
-      }
+    if (overlapped) {
+      fail(pose, "'" + object.name + "' overlaps object '" + world.objects[*overlapped].name + "' (line " +
+                     std::to_string(object_poses_[*overlapped].mark().line + 1) + ") by " + millimetres(overlap));
     }
-    object_boxes.push_back(box);
+    grid.cells[ObjectGrid::key(ix, iy)].push_back(i);
 
     // resting: bottom face near a surface's height, centre above the surface's rectangle
     const Eigen::Vector3d p_WO = object.X_WO.translation();
@@ -883,25 +983,44 @@ void Reader::checkStartPoses(const World& world) const {
 }  // namespace
 
 World parseWorldYaml(std::string_view yaml_text, const std::string& file_name) {
-  const Reader reader_for_errors(file_name);
-  std::vector<YAML::Node> documents;
+  const Reader reader_for_errors(file_name, {});
+  if (const std::optional<TextProblem> problem = findTextProblem(yaml_text)) {
+    reader_for_errors.fail(markAt(problem->line - 1, problem->column - 1), "(text)", problem->what);
+  }
+  // the event scan first: it finds syntax errors, refuses deep nesting before yaml-cpp's tree
+  // recurses into it, counts the documents and knows where aliases are used
+  world_yaml::YamlLayout layout;
   try {
-    documents = YAML::LoadAll(std::string(yaml_text));
+    layout = world_yaml::scanYamlLayout(yaml_text, kMaxYamlNesting);
   } catch (const YAML::Exception& e) {
     reader_for_errors.fail(e.mark.is_null() ? YAML::Mark() : e.mark, "syntax error", e.msg);
   }
-  if (documents.empty() || (documents.size() == 1 && documents[0].IsNull())) {
+  if (layout.too_deep) {
+    reader_for_errors.fail(markAt(layout.too_deep_mark.line, layout.too_deep_mark.column), "(structure)",
+                           "nested deeper than " + std::to_string(kMaxYamlNesting) +
+                               " levels of lists and maps (a world file needs fewer than 10)");
+  }
+  if (layout.documents > 1) {
+    const world_yaml::TextMark& at = layout.second_document;
+    const bool stray_comma = static_cast<std::size_t>(at.offset) < yaml_text.size() && yaml_text[at.offset] == ',';
+    reader_for_errors.fail(markAt(at.line, at.column), "(top level)",
+                           stray_comma ? "a ',' outside a [list] or {map}"
+                                       : "a world file holds one YAML document; found a second one");
+  }
+  YAML::Node document;
+  try {
+    document = YAML::Load(std::string(yaml_text));  // the one document the scan found
+  } catch (const YAML::Exception& e) {
+    reader_for_errors.fail(e.mark.is_null() ? YAML::Mark() : e.mark, "syntax error", e.msg);
+  }
+  if (document.IsNull()) {
     reader_for_errors.fail(YAML::Mark(), "(top level)",
                            "the file is empty; a world file starts with 'dashbed_world: " +
                                std::to_string(kWorldFormatVersion) + "'");
   }
-  if (documents.size() > 1) {
-    reader_for_errors.fail(documents[1].Mark(), "(top level)",
-                           "a world file holds one YAML document; found a second one");
-  }
   try {
-    Reader reader(file_name);
-    return reader.read(documents[0]);
+    Reader reader(file_name, std::move(layout));
+    return reader.read(document);
   } catch (const YAML::Exception& e) {
     // the reader only asks nodes for what they hold; this guards against surprises
     reader_for_errors.fail(e.mark, "(internal)", std::string("YAML error: ") + e.msg);

@@ -7,7 +7,7 @@
 #include "core/json_pointer.h"
 #include "core/json_reader.h"
 #include "core/number_text.h"
-#include "core/text_file.h"
+#include "core/input_text.h"
 
 #include <algorithm>
 #include <cerrno>
@@ -165,13 +165,7 @@ ActionReport readAction(const ReportReader& reader, const Json& json, const std:
 
 Report readReport(const ReportReader& reader, const Json& document) {
   if (!document.is_object()) reader.fail("", "expected a JSON object");
-  const auto version = document.find("dashbed_report");
-  if (version == document.end()) reader.fail("/dashbed_report", "missing: not a dashbed report");
-  if (!version->is_number_integer() || version->get<std::int64_t>() != kReportFormatVersion) {
-    reader.fail("/dashbed_report", "unsupported report format version " + version->dump() +
-                                       " (this build reads version " +
-                                       std::to_string(kReportFormatVersion) + ")");
-  }
+  reader.formatVersion(document, "dashbed_report", kReportFormatVersion, "report");
 
   Report report;
   report.world = reader.string(document, "", "world");

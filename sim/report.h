@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "core/input_text.h"
 #include "core/plan.h"
 #include "core/readiness.h"
 
@@ -103,9 +104,9 @@ struct Report {
 inline constexpr int kReportFormatVersion = 1;
 
 /// A report file that cannot be read. Message "FILE: /json/pointer: what".
-class ReportError : public std::runtime_error {
+class ReportError : public core::InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using core::InputError::InputError;
 };
 
 /// JSON report: {"dashbed_report": 1, "world", "plan", "seed", "time_step", "simulated_time",

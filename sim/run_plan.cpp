@@ -10,22 +10,6 @@
 
 namespace dashbed::sim {
 
-void validatePlanForWorld(const core::Plan& plan, const core::World& world, const core::RobotSet& robots,
-                          const std::string& plan_file) {
-  if (robots.size() == 0) throw core::PlanError(plan_file + ": the world has no robots");
-  const core::RobotModel& model = *robots[0].model;
-  std::array<std::string, 6> names;
-  std::array<double, 6> lower{}, upper{}, velocity{};
-  for (int i = 0; i < 6; ++i) {
-    const core::JointModel& joint = model.joints()[model.movableJoints()[i]];
-    names[i] = joint.name;
-    lower[i] = joint.lower;
-    upper[i] = joint.upper;
-    velocity[i] = joint.max_velocity;
-  }
-  core::validatePlan(plan, world, names, lower, upper, velocity, plan_file);
-}
-
 Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                const std::string& plan_file, const RunOptions& options) {
   // a plan made elsewhere, without actions: they are inferred from a first run

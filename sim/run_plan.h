@@ -21,11 +21,6 @@ struct RunOptions {
   std::function<void(const Simulation&, double plan_time, const Monitor&)> on_step;
 };
 
-/// core::validatePlan with the arm joint names, limits and speeds of the world's robot model.
-/// Throws core::PlanError.
-void validatePlanForWorld(const core::Plan& plan, const core::World& world, const core::RobotSet& robots,
-                          const std::string& plan_file);
-
 /// Builds a simulation of `world`, lets the objects settle for physics.settle_time with the
 /// robots holding still, executes the plan under the monitor and returns the report, with the
 /// plan's hardware readiness (core::checkReadiness) in it. A plan with gripper commands and no

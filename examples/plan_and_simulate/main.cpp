@@ -26,7 +26,7 @@ int main(int argc, char** argv) {
     }
     std::cout << "plan: " << planned.plan->actions.size() << " actions, makespan " << planned.stats.makespan << " s\n";
 
-    sim::validatePlanForWorld(*planned.plan, *world.world, *world.robots, "plan");
+    core::validatePlanForWorld(*planned.plan, *world.world, *world.robots, "plan");
     const sim::Report report = sim::runPlan(*world.world, *world.robots, *planned.plan, "plan");
     for (const sim::ActionReport& action : report.actions) {
       std::cout << (action.verdict == sim::Verdict::kPassed ? "PASS " : "FAIL ") << action.id;

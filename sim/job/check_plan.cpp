@@ -6,6 +6,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/world_loader.h"
+
 namespace dashbed::sim {
 namespace {
 
@@ -13,6 +15,17 @@ void writeFile(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path);
+}
+
+// How a report names its plan file: relative to the report's folder, so that the same run
+// written to another place gives the same bytes ("plan.json" for a plan beside its report).
+std::string planReference(const std::string& plan_file, const std::string& report_json) {
+  if (plan_file.empty() || report_json.empty()) return plan_file;
+  namespace fs = std::filesystem;
+  const fs::path plan = fs::absolute(plan_file).lexically_normal();
+  const fs::path folder = fs::absolute(report_json).lexically_normal().parent_path();
+  const fs::path relative = plan.lexically_relative(folder);
+  return relative.empty() ? plan_file : relative.generic_string();
 }
 
 }  // namespace
@@ -24,8 +37,9 @@ std::string stillsDirectory(const CheckOutputs& outputs) {
 
 RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                       const std::string& plan_file, const CheckOutputs& outputs) {
-  validatePlanForWorld(plan, world, robots, plan_file);
-  RecordedRun run = simulateAndRecord(world, robots, plan, plan_file, outputs.recording, stillsDirectory(outputs));
+  core::validatePlanForWorld(plan, world, robots, plan_file);
+  RecordedRun run = simulateAndRecord(world, robots, plan, planReference(plan_file, outputs.report_json),
+                                      outputs.recording, stillsDirectory(outputs));
   if (!outputs.report_json.empty()) writeFile(outputs.report_json, writeReportJson(run.report));
   if (!outputs.junit.empty()) writeFile(outputs.junit, writeJUnitXml(run.report));
   return run;

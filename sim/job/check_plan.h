@@ -24,7 +24,7 @@ struct CheckOutputs {
 std::string stillsDirectory(const CheckOutputs& outputs);
 
 /// Validates `plan` for `world` (throws core::PlanError naming `plan_file`), simulates it with
-/// the recordings and stills asked for, writes the report files (throws std::runtime_error
+/// the recordings and stills asked for (the report names the plan file relative to its own folder), writes the report files (throws std::runtime_error
 /// when one cannot be written) and returns the run.
 RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                       const std::string& plan_file, const CheckOutputs& outputs);

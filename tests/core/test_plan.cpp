@@ -329,11 +329,9 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
     std::string message;
   };
   const std::string top_keys = "dashbed_plan, world, seed, robots, gripper, actions, statistics";
-  // statistics_too_deep: {"a": [[[...]]]} nested 300 arrays deep; the parser stops at the
-  // array that would be the 257th level (the document, statistics, "a" and 253 arrays in it
-  // make 256), element 0 of the 254th array counting "a"
-  std::string deep_pointer = "/statistics/a";
-  for (int level = 0; level < 254; ++level) deep_pointer += "/0";
+  // statistics_too_deep: {"a": [[[...]]]} nested 300 arrays deep on line 99, which starts
+  // '  "statistics": {"a": ': the document, statistics, "a" and 253 arrays make 256 levels, so
+  // the 254th '[' (column 23 + 253 = 276 is the 253rd) is the one refused
   const std::map<std::string, BadPlan> expected{
       {"invalid_json",
        {"parse",
@@ -346,6 +344,10 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
        {"parse", "/dashbed_plan: missing: not a dashbed plan (expected \"dashbed_plan\": 1)"}},
       {"version_2",
        {"parse", "/dashbed_plan: unsupported plan format version 2 (this build reads version 1)"}},
+      {"version_string", {"parse", "/dashbed_plan: expected the integer 1, got a string \"1\""}},
+      {"utf16",
+       {"parse",
+        "/: line 1, column 1: the file is UTF-16 (it starts with the byte-order mark FF FE); dashbed reads UTF-8 text"}},
       {"unknown_top_key", {"parse", "/comment: unknown key (expected " + top_keys + ")"}},
       {"key_needs_escaping", {"parse", "/a~1b~0c: unknown key (expected " + top_keys + ")"}},
       {"duplicate_key", {"parse", "/robots/1/name: duplicate key"}},
@@ -399,7 +401,7 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
       {"actions_unsorted",
        {"parse", "/actions/2/start: actions must be sorted by start time (2 after 3)"}},
       {"statistics_array", {"parse", "/statistics: expected an object, got an array"}},
-      {"statistics_too_deep", {"parse", deep_pointer + ": nested deeper than 256 levels"}},
+      {"statistics_too_deep", {"parse", "/: line 99, column 277: nested deeper than 256 levels"}},
       {"time_beyond_a_day", {"parse", "/robots/0/points/3/t: time 1e+07 s beyond a day (86400 s)"}},
       // against the world
       {"wrong_world",
@@ -408,6 +410,8 @@ TEST_CASE("bad plans are rejected with the field's JSON pointer", "[plan]") {
         "'sort_2r_4c_cross_s1'"}},
       {"unknown_robot",
        {"validate", "/robots/1/name: unknown robot 'r2' (world 'sort_2r_4c_cross_s1' has r0, r1)"}},
+      {"name_with_nul",
+       {"validate", "/robots/1/name: unknown robot 'r\\x00\\x1B2' (world 'sort_2r_4c_cross_s1' has r0, r1)"}},
       {"unknown_gripper_robot",
        {"validate",
         "/gripper/1/robot: unknown robot 'r7' (world 'sort_2r_4c_cross_s1' has r0, "

@@ -288,7 +288,7 @@ const BadWorld kBadWorlds[] = {
     {"syntax_bad_indent.yaml", "syntax_bad_indent.yaml:7:4: syntax error: end of sequence not found"},
     {"empty.yaml", "empty.yaml:1:1: (top level): the file is empty"},
     {"comment_only.yaml", "comment_only.yaml:1:1: (top level): the file is empty"},
-    {"two_documents.yaml", "two_documents.yaml:26:1: (top level): a world file holds one YAML document"},
+    {"two_documents.yaml", "two_documents.yaml:25:1: (top level): a world file holds one YAML document"},
     {"top_level_list.yaml", "top_level_list.yaml:2:1: (top level): expected a map of world sections"},
     {"top_level_scalar.yaml", "top_level_scalar.yaml:2:1: (top level): expected a map of world sections starting with 'dashbed_world: 1', got 'dashbed world 1'"},
     // version
@@ -372,6 +372,14 @@ const BadWorld kBadWorlds[] = {
     // robots
     {"robot_in_table.yaml", "robot_in_table.yaml:7:11: robots[0].base: robot 'r0' is mounted inside fixture 'table' (its base must rest on a fixture's top, not inside it)"},
     {"object_off_table.yaml", "object_off_table.yaml:22:11: objects[0].pose: 'cube_0' does not rest on any stable surface (bottom face at z = 0.7500 m must be within 2.0 mm of a surface under its centre); no stable surface lies under its centre"},
+    // text and structure: reported where they are, bytes escaped
+    {"alias_wrong_place.yaml", "alias_wrong_place.yaml:21:12: objects[0].color: unknown colour 'r0'; use [r, g, b] in [0, 1] or one of red, green, blue, yellow, orange, purple, cyan, magenta, white, black, grey, brown (the value of alias *robot, anchored at line 5)"},
+    {"stray_comma.yaml", "stray_comma.yaml:2:1: (top level): a ',' outside a [list] or {map}"},
+    {"nested_too_deep.yaml", "nested_too_deep.yaml:7:72: (structure): nested deeper than 64 levels of lists and maps"},
+    {"nul_byte.yaml", "nul_byte.yaml:19:15: (text): a NUL byte (\\x00): not UTF-8 text"},
+    {"utf16.yaml", "utf16.yaml:1:1: (text): the file is UTF-16 (it starts with the byte-order mark FF FE); dashbed reads UTF-8 text"},
+    {"not_utf8.yaml", "not_utf8.yaml:4:18: (text): byte \\xE9 is not part of a UTF-8 character"},
+    {"control_character.yaml", "control_character.yaml:19:15: (text): control character \\x1B (only tab, line feed and carriage return may appear)"},
 };
 
 }  // namespace
@@ -724,4 +732,104 @@ TEST_CASE("formatLocation", "[world_io]") {
   CHECK(formatLocation({"w.yaml", 3, 7}) == "w.yaml:3:7");
   CHECK(formatLocation({"w.yaml", 0, 0}) == "w.yaml");
   CHECK(formatLocation({}) == "<memory>");
+}
+
+TEST_CASE("large worlds: overlaps, goals and names are found among thousands of elements", "[world_io]") {
+  const std::string head =
+      "dashbed_world: 1\n"
+      "name: large\n"
+      "robots: [{name: r0, model: ur5e_hande, base: {xyz: [0, 0, 0]}}]\n"
+      "surfaces: [{name: floor, center: [0, 0, 0], size: [90, 90]}]\n"
+      "regions: [{name: area, center: [40, 40, 0], size: [1, 1, 0.1]}]\n";
+  // 3000 cubes 50 mm apart on rows of 60 (line 7 + i), each with its own goal
+  const auto objects = [](int count, const std::string& last_pose) {
+    std::string text = "objects:\n";
+    for (int i = 0; i < count; ++i) {
+      const std::string pose = i + 1 == count && !last_pose.empty()
+                                   ? last_pose
+                                   : "[" + std::to_string(0.05 * (i % 60)) + ", " + std::to_string(0.05 * (i / 60)) + ", 0.02]";
+      text += "  - {name: c" + std::to_string(i) + ", pose: {xyz: " + pose + "}}\n";
+    }
+    return text;
+  };
+  const auto goals = [](int count) {
+    std::string text = "goals:\n";
+    for (int i = 0; i < count; ++i) text += "  - {object: c" + std::to_string(i) + ", region: area}\n";
+    return text;
+  };
+  SECTION("all apart: the world reads") {
+    const World world = parseWorldYaml(head + objects(3000, "") + goals(3000), "large.yaml");
+    CHECK(world.objects.size() == 3000);
+    CHECK(world.goals.size() == 3000);
+  }
+  SECTION("the last cube overlaps two early ones: the earlier is named") {
+    // between c61 (0.05, 0.05) and c62 (0.10, 0.05), 10 mm into each
+    const std::string text = head + objects(3000, "[0.075, 0.05, 0.02]") + goals(3000);
+    CHECK_THAT(worldErrorOf([&] { parseWorldYaml(text, "large.yaml"); }),
+               Contains("large.yaml:3006:25: objects[2999].pose: 'c2999' overlaps object 'c61' (line 68) by 15.0 mm"));
+  }
+  SECTION("a cube far from the others in the list but next to one on the table") {
+    const std::string text = head + objects(3000, "[2.95, -0.0395, 0.02]") + goals(3000);
+    CHECK_NOTHROW(parseWorldYaml(text, "large.yaml"));  // touches c59 at (2.95, 0): 0.5 mm apart
+    CHECK_THAT(worldErrorOf([&] { parseWorldYaml(head + objects(3000, "[2.95, -0.038, 0.02]") + goals(3000), "large.yaml"); }),
+               Contains("objects[2999].pose: 'c2999' overlaps object 'c59' (line 66) by 2.0 mm"));
+  }
+  SECTION("the last goal repeats the first object's") {
+    const std::string text = head + objects(3000, "") + goals(3000) + "  - {object: c0, region: area}\n";
+    CHECK_THAT(worldErrorOf([&] { parseWorldYaml(text, "large.yaml"); }),
+               Contains("large.yaml:6008:14: goals[3000].object: object 'c0' already has a goal (goals[0] at line 3008)"));
+  }
+  SECTION("the last name repeats an early one") {
+    const std::string text = head + objects(3000, "") + "  - {name: c7, pose: {xyz: [5, 5, 0.02]}}\n";
+    CHECK_THAT(worldErrorOf([&] { parseWorldYaml(text, "large.yaml"); }),
+               Contains("large.yaml:3007:12: objects[3000].name: duplicate name 'c7' (also objects[7].name at line 14)"));
+  }
+  SECTION("more fixtures than the format allows") {
+    std::string text = head + "fixtures:\n";
+    for (int i = 0; i <= 1000; ++i) {
+      text += "  - {name: f" + std::to_string(i) + ", type: box, size: [0.1, 0.1, 0.1], pose: {xyz: [" +
+              std::to_string(i) + ", 10, 0]}}\n";
+    }
+    CHECK_THAT(worldErrorOf([&] { parseWorldYaml(text, "large.yaml"); }),
+               Contains("large.yaml:7:3: fixtures: at most 1000 entries, not 1001"));
+  }
+  SECTION("a map with many keys, one given twice") {
+    std::string text = head + "physics: {";
+    for (int i = 0; i < 2000; ++i) text += "k" + std::to_string(i) + ": 1, ";
+    text += "k5: 2}\n";
+    CHECK_THAT(worldErrorOf([&] { parseWorldYaml(text, "large.yaml"); }),
+               Contains("physics.k5: duplicate key (first at line 6)"));
+  }
+}
+
+TEST_CASE("aliases: a bad value is reported where the alias stands, naming the anchor", "[world_io]") {
+  const std::string head =
+      "dashbed_world: 1\n"
+      "name: aliases\n"
+      "robots:\n"
+      "  - {name: r0, model: ur5e_hande, base: &mount {xyz: [0, 0, .nan]}}\n"
+      "  - {name: r1, model: ur5e_hande, base: *mount}\n";
+  CHECK_THAT(worldErrorOf([&] { parseWorldYaml(head, "a.yaml"); }),
+             Contains("a.yaml:4:61: robots[0].base.xyz[2]: expected a finite number, got '.nan'"));
+  const std::string reused =
+      "dashbed_world: 1\n"
+      "name: aliases\n"
+      "robots:\n"
+      "  - {name: r0, model: ur5e_hande, base: &mount {xyz: [0, 0, 0]}, home: &home [0, -1.5, 1.5, -1.5, -1.5, 0]}\n"
+      "  - {name: r1, model: ur5e_hande, base: {xyz: [1, 0, 0]}, home: *home}\n"
+      "surfaces: [{name: pad, center: [0, 0, 0], size: *home}]\n";
+  CHECK_THAT(worldErrorOf([&] { parseWorldYaml(reused, "a.yaml"); }),
+             Contains("a.yaml:6:49: surfaces[0].size: expected a list of 2 numbers, got 6 items (the value of alias "
+                      "*home, anchored at line 4)"));
+  const World world = parseWorldYaml(reused.substr(0, reused.find("surfaces")), "a.yaml");
+  CHECK(world.robots[1].home == world.robots[0].home);
+}
+
+TEST_CASE("escapes in quoted YAML strings reach messages escaped", "[world_io]") {
+  const std::string text =
+      "dashbed_world: 1\n"
+      "name: \"a\\0b\\e\"\n"
+      "robots: [{name: r0, model: ur5e_hande, base: {xyz: [0, 0, 0]}}]\n";
+  CHECK_THAT(worldErrorOf([&] { parseWorldYaml(text, "q.yaml"); }),
+             Contains("q.yaml:2:7: name: expected a name of letters, digits, '_', '-' and '.', got 'a\\x00b\\x1B'"));
 }

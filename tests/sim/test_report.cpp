@@ -386,7 +386,9 @@ TEST_CASE("JSON report: bad input is rejected with its pointer", "[report]") {
   rejects(bad, "/dashbed_report: unsupported report format version 2 (this build reads version 1)");
   bad = good;
   bad.erase("dashbed_report");
-  rejects(bad, "/dashbed_report: missing: not a dashbed report");
+  rejects(bad, "/dashbed_report: missing: not a dashbed report (expected \"dashbed_report\": 1)");
+  bad["dashbed_report"] = "1";
+  rejects(bad, "/dashbed_report: expected the integer 1, got a string \"1\"");
   bad = good;
   bad["summary"]["failed"] = 1;
   rejects(bad, "/summary/failed: 1 disagrees with the 2 in /actions");

@@ -25,7 +25,7 @@ const core::LoadedWorld& defaultWorld() { return test::defaultWorldWithoutGoals(
 
 sim::Report simulate(const std::string& script, const core::LoadedWorld& world = defaultWorld()) {
   const core::Plan plan = tools::planFromScript(world, script);
-  sim::validatePlanForWorld(plan, *world.world, *world.robots, "script");
+  core::validatePlanForWorld(plan, *world.world, *world.robots, "script");
   return sim::runPlan(*world.world, *world.robots, plan, "script");
 }
 

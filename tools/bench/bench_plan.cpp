@@ -227,7 +227,7 @@ class SimulationMemo {
 
 SimulationMemo::Result simulate(const core::LoadedWorld& world, const core::Plan& plan) {
   try {
-    sim::validatePlanForWorld(plan, *world.world, *world.robots, "plan");
+    core::validatePlanForWorld(plan, *world.world, *world.robots, "plan");
     const sim::Report report = sim::runPlan(*world.world, *world.robots, plan, "plan");
     return {report.passed(), report.passed() ? "" : firstFailure(report)};
   } catch (const std::exception& e) {

@@ -9,12 +9,14 @@
 #include <nlohmann/json.hpp>
 
 #include "core/asset_paths.h"
+#include "core/input_text.h"
 #include "core/world_io.h"
 #include "tools/cli/commands.h"
 
 namespace dashbed::tools {
 
 /// Runs `f`; bad input (WorldError, runtime_error from files) prints "dashbed WHAT: message"
+/// (non-printable bytes escaped)
 /// and exits with kExitBadInput; a bad option value (std::invalid_argument) exits with
 /// kExitUsage. CLI11 errors (including RuntimeError exit codes) pass through.
 template <typename F>
@@ -24,10 +26,10 @@ void runGuarded(const char* what, F&& f) {
   } catch (const CLI::Error&) {
     throw;
   } catch (const std::runtime_error& e) {
-    std::cerr << "dashbed " << what << ": " << e.what() << "\n";
+    std::cerr << "dashbed " << what << ": " << core::printableText(e.what()) << "\n";
     throw CLI::RuntimeError(kExitBadInput);
   } catch (const std::invalid_argument& e) {
-    std::cerr << "dashbed " << what << ": " << e.what() << "\n";
+    std::cerr << "dashbed " << what << ": " << core::printableText(e.what()) << "\n";
     throw CLI::RuntimeError(kExitUsage);
   }
 }

@@ -31,7 +31,7 @@ void runCheck(const CheckOptions& options) {
   world.safety.payload = options.payload.value_or(world.safety.payload);
   world.safety.tcp_speed = options.tcp_speed.value_or(world.safety.tcp_speed);
   const core::Plan plan = core::loadPlanFile(options.plan_file);
-  sim::validatePlanForWorld(plan, world, *loaded.robots, options.plan_file);
+  core::validatePlanForWorld(plan, world, *loaded.robots, options.plan_file);
   const core::ReadinessReport report = core::checkReadiness(plan, world, *loaded.robots);
   if (options.json) {
     nlohmann::json out = {{"ready", report.ready()}, {"checks", nlohmann::json::array()}};

@@ -29,7 +29,7 @@ void runExport(ExportCommandOptions o) {
   const std::filesystem::path world_path = worldFileOrDefault(o.world_file);
   const core::LoadedWorld loaded = core::loadWorld(world_path);
   const core::Plan plan = core::loadPlanFile(o.plan_file);
-  sim::validatePlanForWorld(plan, *loaded.world, *loaded.robots, o.plan_file);
+  core::validatePlanForWorld(plan, *loaded.world, *loaded.robots, o.plan_file);
   const core::ReadinessReport readiness = core::checkReadiness(plan, *loaded.world, *loaded.robots);
   if (!readiness.ready() && !o.force) {
     std::cerr << "dashbed export: " << o.plan_file << " is not ready for hardware: " << readiness.failures()

@@ -85,7 +85,7 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
   std::optional<core::Plan> plan;
   if (settings.mode == StressMode::kReplay) {
     plan = nominalPlan(options, loaded, info.plan);
-    sim::validatePlanForWorld(*plan, *loaded.world, *loaded.robots, info.plan);
+    core::validatePlanForWorld(*plan, *loaded.world, *loaded.robots, info.plan);
   } else {
     info.plan = "planned per trial (" + settings.planner.method + ")";
   }

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "core/input_text.h"
 #include "core/plan.h"
 #include "core/world.h"
 
@@ -26,9 +27,9 @@ struct ForeignTrajectory {
 };
 
 /// A file that cannot be read as a trajectory or timeline: "FILE:LINE: field: what".
-class ForeignPlanError : public std::runtime_error {
+class ForeignPlanError : public core::InputError {
  public:
-  using std::runtime_error::runtime_error;
+  using core::InputError::InputError;
 };
 
 /// The plan of `world` the files describe: per robot its points (positions, with velocities

@@ -8,7 +8,7 @@
 #include <yaml-cpp/yaml.h>
 
 #include "core/hande.h"
-#include "core/text_file.h"
+#include "core/input_text.h"
 #include "tools/export/foreign_plan.h"
 
 namespace dashbed::exporting {
@@ -71,8 +71,17 @@ std::array<double, 6> yamlJoints(const YAML::Node& list, const std::array<std::s
   return values;
 }
 
+// The file's text, refused when it is not UTF-8 text.
+std::string readText(const std::string& file, const std::string& kind) {
+  std::string text = core::readTextFile<ForeignPlanError>(file, kind);
+  if (const std::optional<core::TextProblem> problem = core::findTextProblem(text)) {
+    fail(file, problem->line, "(text)", problem->what);
+  }
+  return text;
+}
+
 YAML::Node loadYaml(const std::string& file, const std::string& kind) {
-  const std::string text = core::readTextFile<ForeignPlanError>(file, kind);
+  const std::string text = readText(file, kind);
   try {
     return YAML::Load(text);
   } catch (const YAML::Exception& e) {
@@ -174,7 +183,7 @@ struct CsvTrajectory {
 };
 
 CsvTrajectory csvTrajectory(const std::string& file, const Names& names, const std::string& robot) {
-  std::istringstream in(core::readTextFile<ForeignPlanError>(file, "trajectory"));
+  std::istringstream in(readText(file, "trajectory"));
   std::string line;
   if (!std::getline(in, line)) fail(file, 1, "(header)", "the file is empty");
   if (!line.empty() && line.back() == '\r') line.pop_back();

@@ -158,7 +158,7 @@ void classifyReport(const sim::Report& report, TrialOutcome& outcome);
 
 /// Outcomes as one JSON text and back (numbers round-trip exactly); used to gather outcomes
 /// from MPI ranks, and written as trials.json and beside each saved trial. Throws
-/// std::runtime_error on bad text.
+/// core::InputError on bad text.
 std::string writeOutcomesJson(const std::vector<TrialOutcome>& outcomes);
 std::vector<TrialOutcome> readOutcomesJson(std::string_view json_text);
 

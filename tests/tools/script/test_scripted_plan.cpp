@@ -440,6 +440,8 @@ TEST_CASE("script errors name the line, the column and the problem", "[script]")
   };
   fails("r0 picks cube_0\nr0 jumps", "t.script:2:4: unknown verb 'jumps' (expected picks, places, hands, waits, moves, opens, closes or stays)");
   fails("r7 picks cube_0", "t.script:1:1: unknown robot 'r7' (world 'script_test' has r0, r1)");
+  fails("r0 picks cube_0\nr0 pla\x01" "ces", "t.script:2:7: control character \\x01 (only tab, line feed and carriage return may appear)");
+  fails("r0 picks cube_\xff", "t.script:1:15: byte \\xFF is not part of a UTF-8 character");
   fails("r0 picks cube_9", "t.script:1:10: unknown object 'cube_9' (world 'script_test' has cube_0, cube_1, cube_2, post, thin, tall)");
   fails("r0 picks cube_0; r0 places cube_0 in bin_green",
         "t.script:1:38: unknown region 'bin_green' (world 'script_test' has bin_red, bin_blue, bin_mid)");
