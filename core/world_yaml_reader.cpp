@@ -28,7 +28,7 @@
 #include "core/input_text.h"
 #include "core/world_io.h"
 #include "core/world_yaml_detail.h"
-#include "core/yaml_layout.h"
+#include "core/internal/yaml_layout.h"
 
 namespace dashbed::core {
 

@@ -1,4 +1,4 @@
-#include "core/yaml_layout.h"
+#include "core/internal/yaml_layout.h"
 
 #include <map>
 #include <optional>

@@ -16,6 +16,7 @@ import sys
 # folder -> the project folders its sources may include (glob patterns), lowest layer first
 LAYERS = {
     "core": [],
+    "core/internal": ["core"],
     "controllers": ["core"],
     "sim": ["core", "controllers"],
     "sim/render": ["core", "controllers", "sim"],

@@ -4,13 +4,31 @@
 # more than 5 s on one input, a leak or an undocumented exception fails the run; the input
 # that did it is kept as BUILD/fuzz-findings/HARNESS/crash-... (or timeout-, leak-, oom-).
 #
-#   tools/setup.sh --fuzz && tests/fuzz/run.sh [SECONDS] [BUILD]     (BUILD: build-fuzz/)
+#   tools/setup.sh --fuzz && tests/fuzz/run.sh [SECONDS] [--record FILE]
+#
+# --record FILE replaces the part of FILE between "<!-- fuzz:begin -->" and "<!-- fuzz:end -->"
+# with a table of the coverage reached, the date, the version and the machine.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
-seconds=${1:-60}
-build=${2:-$root/build-fuzz}
+seconds=60
+record=""
+while (($# > 0)); do
+  case "$1" in
+    --record) record=$2; shift 2 ;;
+    *) seconds=$1; shift ;;
+  esac
+done
+build="$root/build-fuzz"
 here="$root/tests/fuzz"
+table="| harness | reads | seconds | inputs run | coverage (edges) | features | corpus |
+|---|---|---:|---:|---:|---:|---:|"
+declare -A reads=(
+  [fuzz_world]="world YAML" [fuzz_plan]="plan JSON, checked against the default world"
+  [fuzz_report]="report JSON (and its JUnit XML)" [fuzz_outcomes]="stress outcome JSON"
+  [fuzz_script]="action scripts" [fuzz_foreign]="trajectories made elsewhere (ROS 2 YAML, CSV, gripper YAML)"
+  [fuzz_numbers]="command-line numbers"
+)
 
 # the harness and the folders of inputs it starts from
 declare -A seeds=(
@@ -19,11 +37,12 @@ declare -A seeds=(
   [fuzz_report]="$here/seeds/report"
   [fuzz_outcomes]="$here/seeds/outcomes"
   [fuzz_script]="$here/seeds/script"
+  [fuzz_foreign]="$here/seeds/foreign"
   [fuzz_numbers]="$here/seeds/numbers"
 )
 
 failed=()
-for harness in fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_numbers; do
+for harness in fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_foreign fuzz_numbers; do
   binary="$build/tests/fuzz/$harness"
   [[ -x "$binary" ]] || { echo "fuzz: $binary is missing (run tools/setup.sh --fuzz)" >&2; exit 1; }
   corpus="$build/fuzz-corpus/$harness"
@@ -37,7 +56,12 @@ for harness in fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_n
   if "$binary" "$corpus" ${seeds[$harness]} -max_total_time="$seconds" -timeout=5 -rss_limit_mb=4096 \
       -max_len=524288 -dict="$here/dashbed.dict" -artifact_prefix="$findings/" -print_final_stats=1 \
       >"$log" 2>&1; then
-    echo "fuzz: $harness: $(grep -o 'cov: [0-9]* ft: [0-9]*' "$log" | tail -1), $(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$') inputs in ${seconds} s, corpus $(ls "$corpus" | wc -l)"
+    cov=$(grep -o 'cov: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*')
+    ft=$(grep -o 'ft: [0-9]*' "$log" | tail -1 | grep -o '[0-9]*')
+    runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$')
+    size=$(ls "$corpus" | wc -l)
+    echo "fuzz: $harness: $runs inputs in $seconds s, coverage $cov edges, $ft features, corpus $size"
+    table+=$'\n'"| \`$harness\` | ${reads[$harness]} | $seconds | $runs | $cov | $ft | $size |"
   else
     echo "fuzz: $harness FAILED; the input: $(ls -t "$findings" | head -1); log: $log" >&2
     tail -40 "$log" >&2
@@ -45,3 +69,20 @@ for harness in fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_n
   fi
 done
 ((${#failed[@]} == 0)) || { echo "fuzz: findings in ${failed[*]}" >&2; exit 1; }
+
+if [[ -n "$record" ]]; then
+  version=$(grep -oP 'project\(dashbed VERSION \K[0-9.]+' "$root/CMakeLists.txt")
+  machine="$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores"
+  section="$table
+
+Recorded by \`tests/fuzz/run.sh $seconds --record\` on $(date -u +%Y-%m-%d), dashbed $version, $machine, $(clang++ --version | head -1)."
+  python3 - "$record" "$section" <<'PY'
+import sys
+path, section = sys.argv[1], sys.argv[2]
+text = open(path).read()
+begin, end = "<!-- fuzz:begin -->", "<!-- fuzz:end -->"
+i, j = text.index(begin) + len(begin), text.index(end)
+open(path, "w").write(text[:i] + "\n" + section + "\n" + text[j:])
+PY
+  echo "fuzz: recorded in $record"
+fi

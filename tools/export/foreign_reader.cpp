@@ -98,7 +98,11 @@ std::vector<core::TrajectoryPoint> yamlTrajectory(const std::string& file, const
   const YAML::Node joint_names = trajectory["joint_names"];
   if (!joint_names.IsSequence()) fail(file, lineOf(joint_names), "joint_names", "expected a list of names");
   std::vector<std::string> given;
-  for (const YAML::Node& name : joint_names) given.push_back(name.as<std::string>());
+  for (std::size_t i = 0; i < joint_names.size(); ++i) {
+    const YAML::Node name = joint_names[i];
+    if (!name.IsScalar()) fail(file, lineOf(name), "joint_names[" + std::to_string(i) + "]", "expected a name");
+    given.push_back(name.Scalar());
+  }
   const std::array<std::size_t, 6> order = jointOrder(given, names, file, lineOf(joint_names), "joint_names");
   const YAML::Node points = trajectory["points"];
   if (!points.IsSequence() || points.size() == 0) fail(file, lineOf(points), "points", "expected a list of points");
@@ -238,6 +242,17 @@ CsvTrajectory csvTrajectory(const std::string& file, const Names& names, const s
   return result;
 }
 
+// Runs a YAML reader of `file`; a yaml-cpp error the reader did not foresee is reported as a
+// ForeignPlanError at its line instead of escaping as yaml-cpp's own exception.
+template <class Read>
+auto yamlSection(const std::string& file, Read&& read) {
+  try {
+    return read();
+  } catch (const YAML::Exception& e) {
+    fail(file, e.mark.line + 1, "(yaml)", e.msg);
+  }
+}
+
 bool hasExtension(const std::string& file, std::initializer_list<const char*> extensions) {
   std::string extension = std::filesystem::path(file).extension().string();
   std::transform(extension.begin(), extension.end(), extension.begin(), [](unsigned char c) { return std::tolower(c); });
@@ -263,11 +278,13 @@ core::Plan readForeignPlan(const core::World& world, const Names& joint_names,
       trajectory.points = std::move(csv.points);
       gripper = std::move(csv.gripper);
     } else if (hasExtension(files.trajectory_file, {".yaml", ".yml"})) {
-      trajectory.points = yamlTrajectory(files.trajectory_file, joint_names);
+      trajectory.points = yamlSection(files.trajectory_file, [&] { return yamlTrajectory(files.trajectory_file, joint_names); });
     } else {
       throw ForeignPlanError(files.trajectory_file + ": expected a .csv, .yaml or .yml trajectory file");
     }
-    if (!files.gripper_file.empty()) gripper = yamlGripper(files.gripper_file, files.robot);
+    if (!files.gripper_file.empty()) {
+      gripper = yamlSection(files.gripper_file, [&] { return yamlGripper(files.gripper_file, files.robot); });
+    }
     plan.trajectories.push_back(std::move(trajectory));
     plan.gripper.insert(plan.gripper.end(), gripper.begin(), gripper.end());
   }

@@ -6,7 +6,6 @@
 #include <system_error>
 
 #include "core/input_text.h"
-#include "tools/script/scripted_plan.h"
 
 namespace dashbed::tools {
 namespace {

@@ -10,10 +10,17 @@
 
 #include <Eigen/Core>
 
+#include "core/input_text.h"
 #include "core/ur_ik.h"
 #include "core/world.h"
 
 namespace dashbed::tools {
+
+/// A script that cannot be turned into a plan. The message reads
+/// "NAME:LINE:COLUMN: what is wrong", e.g. "script:2:4: unknown verb 'jumps' (...)".
+struct ScriptError : core::InputError {
+  using core::InputError::InputError;
+};
 
 struct Token {
   std::string text;

@@ -30,17 +30,11 @@
 #include <string>
 #include <string_view>
 
-#include "core/input_text.h"
 #include "core/plan.h"
 #include "core/world_loader.h"
+#include "tools/script/script_parser.h"
 
 namespace dashbed::tools {
-
-/// A script that cannot be turned into a plan. The message reads
-/// "NAME:LINE:COLUMN: what is wrong", e.g. "script:2:4: unknown verb 'jumps' (...)".
-struct ScriptError : core::InputError {
-  using core::InputError::InputError;
-};
 
 /// Motion and timing parameters of scripted plans. The defaults: half the UR5e joint speed,
 /// slow straight approaches, Hand-E dwell times.

@@ -134,6 +134,10 @@ TEST_CASE("a bad trajectory file is refused naming file, line and field", "[fore
           "wrist_3_joint]\npoints:\n  - positions: [0, -1.57, 1.57, -1.57, -1.57, 0]\n"
           "    time_from_start: {sec: 0, nanosec: x}\n",
           ":4: points[0].time_from_start.nanosec: expected a finite number, got 'x'");
+  // found by fuzzing: a name that is a map escaped as yaml-cpp's own "bad conversion"
+  refused("map_name.yaml", "trajectory:\n  joint_names: [a, {b: c}]\n  points: []\n",
+          ":2: joint_names[1]: expected a name");
+  refused("utf16.yaml", std::string("\xFF\xFEj\0", 4), ":1: (text): the file is UTF-16");
   refused("plan.txt", "", ": expected a .csv, .yaml or .yml trajectory file");
   CHECK_THROWS_WITH(exporting::readForeignPlan(*world().world, kJoints, {{"r9", (dir / "back.csv").string(), ""}}),
                     Catch::Matchers::Contains("the world has no robot 'r9'"));
