@@ -13,6 +13,7 @@
 #include "sim/render/render_benchmark.h"
 #include "tools/bench/bench_plan.h"
 #include "tools/bench/bench_record.h"
+#include "tools/bench/read_bench.h"
 #include "tools/bench/collision_bench.h"
 #include "tools/bench/sim_bench.h"
 #include "tools/cli/cli_support.h"
@@ -112,6 +113,20 @@ void addBenchCommand(CLI::App& app) {
     runGuarded("bench collision", [&] {
       report(benchCollision(*collision), *record, *checks, "collision",
              "Collision checking (`dashbed bench collision`)");
+    });
+  });
+
+  auto read = std::make_shared<ReadBenchOptions>();
+  CLI::App* reading = bench->add_subcommand(
+      "read", "How fast large world and plan files are read: made in memory at each size, accepted and refused "
+              "at their last line");
+  reading->add_option("--megabytes", read->megabytes, "sizes of the files made [MB]")
+      ->check(finiteAbove(0.0, false))
+      ->capture_default_str();
+  add_record(reading);
+  reading->callback([read, record, reading] {
+    runGuarded("bench read", [&] {
+      report(benchReading(*read), *record, *reading, "read", "Reading large files (`dashbed bench read`)");
     });
   });
 
