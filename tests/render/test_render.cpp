@@ -386,10 +386,8 @@ TEST_CASE("Overlays draw text at the top left and a ring around a marked point",
 }
 
 TEST_CASE("Video: 30 frames make an MP4 of 30 frames", "[render][video]") {
-  if (!render::ffmpegAvailable()) {
-    WARN("ffmpeg is not on PATH: video test skipped");
-    return;
-  }
+  INFO("ffmpeg and ffprobe are part of the set-up (tools/setup.sh installs them)");
+  REQUIRE(render::ffmpegAvailable());
   const auto& [world, robots, reach] = defaultWorld();
   render::SceneRenderer renderer(*world, *robots);
   const render::Camera camera = render::cameraPreset(*world, "oblique", 320, 240);
@@ -415,10 +413,7 @@ TEST_CASE("Video: 30 frames make an MP4 of 30 frames", "[render][video]") {
   CHECK_THROWS_AS(dut.add(render::Image::filled(320, 240)), std::runtime_error);  // after finish
   CHECK_THROWS_AS(render::VideoWriter(dir.path / "odd.mp4", 321, 240, 30.0), std::invalid_argument);
 
-  if (!render::ffprobeAvailable()) {
-    WARN("ffprobe is not on PATH: frame count not checked");
-    return;
-  }
+  REQUIRE(render::ffprobeAvailable());
   const std::string frames =
       capture("ffprobe -v error -count_frames -select_streams v:0 -show_entries stream=nb_read_frames -of csv=p=0 '" +
               mp4.string() + "'");
@@ -434,19 +429,18 @@ TEST_CASE("Video: a missing ffmpeg or a failing ffmpeg is a clear error", "[rend
   CHECK_FALSE(render::ffmpegAvailable());
   ::setenv("PATH", saved.c_str(), 1);
 
-  if (render::ffmpegAvailable()) {
-    // ffmpeg cannot create a file in a folder that does not exist: finish() reports its message
-    render::VideoWriter writer(dir.path / "missing" / "x.mp4", 64, 48, 30.0);
-    bool threw = false;
-    try {
-      for (int k = 0; k < 5; ++k) writer.add(render::Image::filled(64, 48, 10, 20, 30));
-      writer.finish();
-    } catch (const std::runtime_error& e) {
-      threw = true;
-      CHECK_THAT(e.what(), Catch::Contains("ffmpeg") && Catch::Contains("x.mp4"));
-    }
-    CHECK(threw);
+  // ffmpeg cannot create a file in a folder that does not exist: finish() reports its message
+  REQUIRE(render::ffmpegAvailable());
+  render::VideoWriter writer(dir.path / "missing" / "x.mp4", 64, 48, 30.0);
+  bool threw = false;
+  try {
+    for (int k = 0; k < 5; ++k) writer.add(render::Image::filled(64, 48, 10, 20, 30));
+    writer.finish();
+  } catch (const std::runtime_error& e) {
+    threw = true;
+    CHECK_THAT(e.what(), Catch::Contains("ffmpeg") && Catch::Contains("x.mp4"));
   }
+  CHECK(threw);
 }
 
 TEST_CASE("FrameRecorder writes one frame per 1/fps of plan time", "[render]") {

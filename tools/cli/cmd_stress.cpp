@@ -106,8 +106,11 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
   const std::vector<std::string> parts = group.gatherToRoot(writeOutcomesJson(local));
   if (group.rank() != 0) return;
   std::vector<TrialOutcome> outcomes;
+  std::string shares;  // trials per rank, "2 + 2"
   for (const std::string& part : parts) {
-    for (TrialOutcome& o : readOutcomesJson(part)) outcomes.push_back(std::move(o));
+    std::vector<TrialOutcome> rank_outcomes = readOutcomesJson(part);
+    shares += (shares.empty() ? "" : " + ") + std::to_string(rank_outcomes.size());
+    for (TrialOutcome& o : rank_outcomes) outcomes.push_back(std::move(o));
   }
   std::sort(outcomes.begin(), outcomes.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
@@ -121,7 +124,8 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
   std::cout << summaryText(info, points);
   printWorst(worst, options.out_dir);
   std::cout << outcomes.size() << " trials in " << core::fixedText(seconds, 1) << " s on " << group.size()
-            << (group.size() > 1 ? " processes" : " process") << " x " << threads << " threads: "
+            << (group.size() > 1 ? " processes (" + shares + " trials)" : std::string(" process")) << " x " << threads
+            << " threads: "
             << core::fixedText(3600.0 * static_cast<double>(outcomes.size()) / seconds, 0)
             << " trials/hour; results in " << options.out_dir << "/\n";
   if (!meetsAll(info, points)) throw CLI::RuntimeError(kExitCheckFailed);

@@ -84,7 +84,8 @@ TEST_CASE("ScenarioRng is portable and in range", "[scenarios]") {
   CHECK_THROWS_AS(dut.index(0), std::invalid_argument);
 }
 
-TEST_CASE("generators are deterministic and seed-dependent", "[scenarios]") {
+// (the same seed giving the same bytes is checked across processes: CTest cli:plans and reports ...)
+TEST_CASE("generators depend on their seed", "[scenarios]") {
   for (StartLayout start : {StartLayout::kCross, StartLayout::kRandom}) {
     for (int robots : {2, 4, 5}) {
       SortingParams p;
@@ -93,7 +94,6 @@ TEST_CASE("generators are deterministic and seed-dependent", "[scenarios]") {
       p.start = start;
       if (robots == 5) p.layout = RobotLayout::kRing;
       INFO("robots " << robots << " start " << toString(start));
-      CHECK(yamlOf(p) == yamlOf(p));
       SortingParams q = p;
       q.seed = 2;
       CHECK(yamlOf(p) != yamlOf(q));
@@ -101,7 +101,6 @@ TEST_CASE("generators are deterministic and seed-dependent", "[scenarios]") {
   }
   ShelvingParams s;
   s.objects = 6;
-  CHECK(yamlOf(s) == yamlOf(s));
   ShelvingParams t = s;
   t.seed = 7;
   CHECK(yamlOf(s) != yamlOf(t));

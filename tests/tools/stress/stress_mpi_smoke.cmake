@@ -1,5 +1,6 @@
 # MPI smoke test of `dashbed stress`: the same small campaign run by one process and by two
-# MPI ranks must write byte-identical results (summary, JUnit, trials.csv, the saved trials).
+# MPI ranks must write byte-identical results (summary, JUnit, trials.csv, the saved trials),
+# and each rank must have run its share of the trials (rank 0 reports what it gathered).
 #
 #   cmake -DDASHBED=<dashbed binary> -DMPIEXEC=<mpirun> -DWORLD=<world file> -DWORK_DIR=<scratch dir>
 #         -P stress_mpi_smoke.cmake
@@ -13,6 +14,7 @@ function(run)
   if(NOT code EQUAL 0)
     message(FATAL_ERROR "failed (${code}): ${ARGN}\n${out}\n${err}")
   endif()
+  set(output "${out}" PARENT_SCOPE)
 endfunction()
 
 # a grasp 5 mm off the cube's centre: some trials pass, some fail, so trials get saved (the
@@ -24,6 +26,11 @@ set(campaign stress "${WORLD}" --plan "${WORK_DIR}/plan.json" --trials 4 --sigma
 run("${DASHBED}" ${campaign} --out "${WORK_DIR}/single")
 # --oversubscribe: 2 ranks even on a machine with fewer free cores; CI runs as root
 run("${MPIEXEC}" --allow-run-as-root --oversubscribe -np 2 "${DASHBED}" ${campaign} --out "${WORK_DIR}/mpi")
+# every 2nd trial on each rank: 2 and 2 of the 4 (ranks running the whole campaign on their own
+# would each report 1 process and write the same files)
+if(NOT output MATCHES "4 trials in [0-9.]+ s on 2 processes \\(2 \\+ 2 trials\\)")
+  message(FATAL_ERROR "the 2 ranks did not share the 4 trials 2 + 2:\n${output}")
+endif()
 
 file(GLOB_RECURSE single_files RELATIVE "${WORK_DIR}/single" "${WORK_DIR}/single/*")
 file(GLOB_RECURSE mpi_files RELATIVE "${WORK_DIR}/mpi" "${WORK_DIR}/mpi/*")
