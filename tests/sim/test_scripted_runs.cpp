@@ -4,7 +4,9 @@
 
 #include <catch2/catch.hpp>
 
+#include <algorithm>
 #include <array>
+#include <map>
 #include <numbers>
 #include <optional>
 #include <string>
@@ -13,6 +15,7 @@
 #include "sim/plan_executor.h"
 #include "sim/report.h"
 #include "sim/run_plan.h"
+#include "sim/simulation.h"
 #include "tests/sim/sim_test_worlds.h"
 #include "tools/script/scripted_plan.h"
 
@@ -299,4 +302,101 @@ TEST_CASE("a heavy cube carried through a handoff is tracked as closely as a lig
     INFO(robot.robot);
     CHECK(robot.max_tracking_error < 0.01);
   }
+}
+
+TEST_CASE("the Hand-E squeezes a cube with the force its command asks, 185 N at most", "[sim][scripted][grip]") {
+  // the controller's force limit and the finger servo's bound, measured at the contacts: each
+  // finger presses on the cube with the commanded force once the fingers have closed on it
+  const core::LoadedWorld& world = defaultWorld();
+  core::Plan plan = tools::planFromScript(world, "r1 picks cube_0; r1 waits 1");
+  const auto close = std::find_if(plan.gripper.begin(), plan.gripper.end(), [](const core::GripperCommand& c) {
+    return c.robot == "r1" && c.action == core::GripperAction::kClose;
+  });
+  REQUIRE(close != plan.gripper.end());
+  for (const double force : {40.0, 120.0, 185.0}) {
+    close->force = force;
+    sim::Simulation sim(*world.world, *world.robots);
+    sim::PlanExecutor dut(sim, plan);
+    while (sim.time() < close->t + 0.3) dut.step();
+    std::map<int, double> per_finger;  // finger link -> normal force on cube_0 [N]
+    for (const sim::Contact& c : sim.contacts()) {
+      const bool ab = c.a.kind == sim::BodyRef::Kind::kRobot && c.a.index == 1 &&
+                      c.b.kind == sim::BodyRef::Kind::kObject && c.b.index == 0;
+      const bool ba = c.b.kind == sim::BodyRef::Kind::kRobot && c.b.index == 1 &&
+                      c.a.kind == sim::BodyRef::Kind::kObject && c.a.index == 0;
+      if (ab) per_finger[c.a.link] += c.normal_force;
+      if (ba) per_finger[c.b.link] += c.normal_force;
+    }
+    INFO("commanded " << force << " N");
+    REQUIRE(per_finger.size() == 2);
+    for (const auto& [link, measured] : per_finger) {
+      INFO("finger link " << link << ": " << measured << " N");
+      CHECK(measured == Approx(force).epsilon(0.01));
+      CHECK(measured <= 185.0 * 1.05);
+    }
+  }
+}
+
+namespace {
+
+// The scripted hand-over of cube_0 from r1 to r0 (and r0's place), with `edit` applied to the
+// receiver's close and the giver's open of the handoff; returns the handoff's report.
+template <class Edit>
+sim::ActionReport editedHandoff(const core::LoadedWorld& world, Edit&& edit) {
+  core::Plan plan = tools::planFromScript(world, "r1 picks cube_0; r1 hands cube_0 to r0; r0 places cube_0 in bin_red");
+  const core::PlanAction& handoff = plan.actions[1];
+  REQUIRE(handoff.type == core::ActionType::kHandoff);
+  core::GripperCommand* receiver_close = nullptr;
+  core::GripperCommand* giver_open = nullptr;
+  for (core::GripperCommand& c : plan.gripper) {
+    if (c.t < handoff.start || c.t > handoff.end) continue;
+    if (c.robot == "r0" && c.action == core::GripperAction::kClose) receiver_close = &c;
+    if (c.robot == "r1" && c.action == core::GripperAction::kOpen) giver_open = &c;
+  }
+  REQUIRE(receiver_close != nullptr);
+  REQUIRE(giver_open != nullptr);
+  edit(plan, handoff, *receiver_close, *giver_open);
+  const sim::Report report = sim::runPlan(*world.world, *world.robots, plan, "script");
+  return action(report, "handoff cube_0 from r1 to r0");
+}
+
+}  // namespace
+
+TEST_CASE("a giver that opens before the receiver holds fails the handoff's overlap", "[sim][scripted][handoff][long]") {
+  const sim::ActionReport handoff =
+      editedHandoff(defaultWorld(), [](core::Plan&, const core::PlanAction&, core::GripperCommand& close,
+                                       core::GripperCommand& open) { open.t = close.t + 0.03; });
+  INFO(handoff.failure);
+  CHECK(handoff.verdict == sim::Verdict::kFailed);
+  CHECK_THAT(handoff.failure, Catch::Matchers::Contains("overlap: both grippers held cube_0 together for"));
+}
+
+TEST_CASE("a giver that keeps its grip while it retreats pulls the cube away: the handoff fails",
+          "[sim][scripted][handoff][long]") {
+  const sim::ActionReport handoff = editedHandoff(
+      defaultWorld(), [](core::Plan&, const core::PlanAction& a, core::GripperCommand&, core::GripperCommand& open) {
+        open.t = a.end - 0.04;
+      });
+  INFO(handoff.failure);
+  CHECK(handoff.verdict == sim::Verdict::kFailed);
+  CHECK_THAT(handoff.failure, Catch::Matchers::Contains("transfer: r1 still touches cube_0 at the end"));
+}
+
+TEST_CASE("a receiver gripping a heavy, slippery cube too lightly lets it slip", "[sim][scripted][handoff][long]") {
+  // 1.5 kg at friction 0.3: the giver's 185 N holds it, the receiver's 20 N holds 1.2 kg at most
+  core::World world = *test::defaultWorldWithoutGoals().world;
+  world.objects[0].mass = 1.5;
+  world.objects[0].friction = 0.3;
+  const core::LoadedWorld heavy = core::validateWorld(std::move(world));
+  const sim::ActionReport handoff = editedHandoff(heavy, [](core::Plan& plan, const core::PlanAction&,
+                                                            core::GripperCommand& close, core::GripperCommand&) {
+    close.force = 20.0;
+    for (core::GripperCommand& c : plan.gripper) {
+      if (c.robot == "r1" && c.action == core::GripperAction::kClose) c.force = 185.0;
+    }
+  });
+  INFO(handoff.failure);
+  CHECK(handoff.verdict == sim::Verdict::kFailed);
+  CHECK_THAT(handoff.failure, Catch::Matchers::Contains("receiver slip") &&
+                                  Catch::Matchers::Contains("transfer: r0 does not hold cube_0 at the end"));
 }
