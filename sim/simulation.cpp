@@ -539,6 +539,8 @@ void Simulation::setObjectPose(int o, const Pose& X_WO) {
   body.clearForces();
 }
 
+void Simulation::detectContacts() { impl_->world.performDiscreteCollisionDetection(); }
+
 std::vector<Contact> Simulation::contacts() const {
   constexpr double kTouching = 0.001;  // [m] points closer than this count as touching
   std::vector<Contact> out;

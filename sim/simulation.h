@@ -80,6 +80,9 @@ class Simulation {
 
   /// Touching pairs after the last step (distance below 1 mm), in a deterministic order.
   std::vector<Contact> contacts() const;
+  /// Runs collision detection alone, without a step: contacts() then reports the scene as set
+  /// by setJointPositions and setObjectPose (for checking a plan's geometry; no forces).
+  void detectContacts();
 
  private:
   struct Impl;

@@ -50,8 +50,8 @@ check_one() {
   local took=$((SECONDS - start)) verdict=ok detail=""
   if [[ "$code" != "$want_code" ]]; then
     verdict=FAIL detail="expected exit $want_code"
-  elif ! grep -qF -- "$want_text" "$log.out" "$log.err"; then
-    verdict=FAIL detail="output lacks '$want_text'"
+  elif ! grep -qsF -- "$want_text" "$log.out" "$log.err" "$log.report.json"; then
+    verdict=FAIL detail="output and report lack '$want_text'"
   fi
   [[ "$verdict" == ok ]] || detail="$detail; see $log.out, $log.err"
   printf '%-4s %-26s exit %s, %3d s %s\n' "$verdict" "$name" "$code" "$took" "$detail"

@@ -55,7 +55,7 @@ TEST_CASE("greedy DaSH plans the default world into valid collision-free chains"
   // 4 cubes that all need a handoff (cross starts): 4 picks, 4 handoffs, 4 places
   CHECK(plan.actions.size() == 12);
   requireMovesStartAtRest(plan);
-  requireNoRobotCollision(plan, world);
+  requireNoCollision(plan, world);
   CHECK(result.stats.makespan > 0.0);
   CHECK(result.stats.makespan == Approx(plan.duration()).margin(1e-9));
   CHECK(plan.statistics.at("status") == "solved");
@@ -101,7 +101,7 @@ TEST_CASE("direct queries that use up their share of the time leave the rest to 
   REQUIRE(result.status == PlannerStatus::kSolved);
   CHECK(result.stats.sequential);
   requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  requireNoCollision(*result.plan, world);
   REQUIRE(progress.size() >= 2);
   CHECK_THAT(progress[1], Contains("the direct queries used their share of the time budget"));
   CHECK(std::none_of(progress.begin(), progress.end(),
@@ -420,7 +420,7 @@ TEST_CASE("a pick that runs into a robot standing at home is planned around with
   CHECK(result.stats.scheduling_constraints >= 1);
   const core::Plan& plan = *result.plan;
   requireValidActions(plan, *world.world);
-  requireNoRobotCollision(plan, world);
+  requireNoCollision(plan, world);
   REQUIRE(plan.actions.size() == 3);
   CHECK(plan.actions[0].type == core::ActionType::kPick);
   CHECK(plan.actions[0].robot == "r0");
@@ -437,7 +437,7 @@ TEST_CASE("robots hand over where their handoff zone moved: before a post, besid
   REQUIRE(result.status == PlannerStatus::kSolved);
   const core::Plan& plan = *result.plan;
   requireValidActions(plan, *world.world);
-  requireNoRobotCollision(plan, world);
+  requireNoCollision(plan, world);
   // every cube starts on the far side from its bin
   const auto handoffs = std::count_if(plan.actions.begin(), plan.actions.end(), [](const core::PlanAction& a) {
     return a.type == core::ActionType::kHandoff;
@@ -453,7 +453,7 @@ TEST_CASE("a robot standing at home over the only pick another robot can make fo
   REQUIRE(result.status == PlannerStatus::kSolved);
   const core::Plan& plan = *result.plan;
   requireValidActions(plan, *world.world);
-  requireNoRobotCollision(plan, world);
+  requireNoCollision(plan, world);
   REQUIRE(plan.actions.size() == 2);
   CHECK(plan.actions[0].robot == "r1");
   CHECK(plan.actions[1].robot == "r1");
@@ -479,7 +479,7 @@ TEST_CASE("a goal slot only a robot missing the region's centre reaches is place
   REQUIRE(result.status == PlannerStatus::kSolved);
   const core::Plan& plan = *result.plan;
   requireValidActions(plan, *world.world);
-  requireNoRobotCollision(plan, world);
+  requireNoCollision(plan, world);
   REQUIRE_FALSE(plan.actions.empty());
   CHECK(plan.actions.back().type == core::ActionType::kPlace);
   CHECK(plan.actions.back().robot == "r0");

@@ -33,7 +33,7 @@ PlanResult solvedValid(const core::LoadedWorld& world, const PlannerSettings& se
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
   requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  requireNoCollision(*result.plan, world);
   return result;
 }
 
@@ -310,7 +310,7 @@ TEST_CASE("a plan with the robots parked out of every transition's way is a fall
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
   requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  requireNoCollision(*result.plan, world);
   CHECK_FALSE(result.stats.sequential);
   CHECK(result.stats.rounds == 1 + settings.sequential_fallback_rounds);
   const auto said = [&](const std::string& text) {
@@ -335,7 +335,7 @@ TEST_CASE("a second try that runs out of nodes best first resolves depth first a
   INFO(result.reason);
   REQUIRE(result.status == PlannerStatus::kSolved);
   requireValidActions(*result.plan, *world.world);
-  requireNoRobotCollision(*result.plan, world);
+  requireNoCollision(*result.plan, world);
   CHECK_FALSE(result.stats.sequential);
   const auto line_with = [&](const std::string& text, std::size_t from = 0) {
     return std::find_if(progress.begin() + static_cast<std::ptrdiff_t>(from), progress.end(),
