@@ -32,4 +32,11 @@ std::filesystem::path robotUrdfPath(std::string_view model) {
 
 std::filesystem::path defaultWorldPath() { return dataRoot() / "worlds" / "default.yaml"; }
 
+std::string pathFrom(const std::filesystem::path& file, const std::filesystem::path& folder) {
+  if (file.empty() || folder.empty()) return file.generic_string();
+  const std::filesystem::path relative = std::filesystem::absolute(file).lexically_normal().lexically_relative(
+      std::filesystem::absolute(folder).lexically_normal());
+  return relative.empty() ? file.generic_string() : relative.generic_string();
+}
+
 }  // namespace dashbed::core

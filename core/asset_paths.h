@@ -1,7 +1,8 @@
 #pragma once
-// Where dashbed finds its data folders (assets/, worlds/).
+// Where dashbed finds its data folders (assets/, worlds/), and how written files name others.
 
 #include <filesystem>
+#include <string>
 #include <string_view>
 
 namespace dashbed::core {
@@ -17,5 +18,10 @@ std::filesystem::path robotUrdfPath(std::string_view model);
 
 /// worlds/default.yaml under dataRoot().
 std::filesystem::path defaultWorldPath();
+
+/// `file` as seen from `folder` ("../plans/p.json", "/" separators): how a written file names
+/// another, so that its bytes do not depend on where both were put. `file` as given when
+/// either is empty.
+std::string pathFrom(const std::filesystem::path& file, const std::filesystem::path& folder);
 
 }  // namespace dashbed::core

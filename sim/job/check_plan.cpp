@@ -6,6 +6,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/asset_paths.h"
 #include "core/world_loader.h"
 
 namespace dashbed::sim {
@@ -15,17 +16,6 @@ void writeFile(const std::string& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
   if (!out) throw std::runtime_error("cannot write " + path);
-}
-
-// How a report names its plan file: relative to the report's folder, so that the same run
-// written to another place gives the same bytes ("plan.json" for a plan beside its report).
-std::string planReference(const std::string& plan_file, const std::string& report_json) {
-  if (plan_file.empty() || report_json.empty()) return plan_file;
-  namespace fs = std::filesystem;
-  const fs::path plan = fs::absolute(plan_file).lexically_normal();
-  const fs::path folder = fs::absolute(report_json).lexically_normal().parent_path();
-  const fs::path relative = plan.lexically_relative(folder);
-  return relative.empty() ? plan_file : relative.generic_string();
 }
 
 }  // namespace
@@ -38,8 +28,12 @@ std::string stillsDirectory(const CheckOutputs& outputs) {
 RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                       const std::string& plan_file, const CheckOutputs& outputs) {
   core::validatePlanForWorld(plan, world, robots, plan_file);
-  RecordedRun run = simulateAndRecord(world, robots, plan, planReference(plan_file, outputs.report_json),
-                                      outputs.recording, stillsDirectory(outputs));
+  // the report names its plan from its own folder: the same run written elsewhere, the same bytes
+  const std::string plan_name =
+      outputs.report_json.empty()
+          ? plan_file
+          : core::pathFrom(plan_file, std::filesystem::absolute(outputs.report_json).parent_path());
+  RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs));
   if (!outputs.report_json.empty()) writeFile(outputs.report_json, writeReportJson(run.report));
   if (!outputs.junit.empty()) writeFile(outputs.junit, writeJUnitXml(run.report));
   return run;

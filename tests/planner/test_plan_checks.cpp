@@ -31,7 +31,7 @@ std::string downAt(int r, const Eigen::Vector3d& p_W) {
   const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
   REQUIRE(!solutions.empty());
   std::string q;
-  for (const double v : solutions.front()) q += " " + std::to_string(v);
+  for (const double v : solutions.front()) q.append(" ").append(std::to_string(v));
   return q;
 }
 

@@ -80,12 +80,16 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
 
   const std::filesystem::path world_path = worldFileOrDefault(options.world_file);
   const core::LoadedWorld loaded = core::loadWorld(world_path);
-  CampaignInfo info{loaded.world->name, world_path.string(), "", settings,
+  // the files written name the world and plan files from the output folder: the same campaign
+  // written elsewhere, the same bytes
+  const std::string world_name = core::pathFrom(world_path, options.out_dir);
+  CampaignInfo info{loaded.world->name, world_name, "", settings,
                     options.min_success >= 0.0 ? std::optional<double>(options.min_success) : std::nullopt};
   std::optional<core::Plan> plan;
   if (settings.mode == StressMode::kReplay) {
     plan = nominalPlan(options, loaded, info.plan);
     core::validatePlanForWorld(*plan, *loaded.world, *loaded.robots, info.plan);
+    if (!options.plan_file.empty()) info.plan = core::pathFrom(options.plan_file, options.out_dir);
   } else {
     info.plan = "planned per trial (" + settings.planner.method + ")";
   }

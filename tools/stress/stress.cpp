@@ -149,7 +149,8 @@ PerturbedWorld perturbWorld(const core::World& nominal, const PerturbationSigmas
       }
     }
   }
-  world.description = "stress trial of " + world_file + " (trial seed " + std::to_string(seed) + ", sigma_xy " +
+  // named by the world's name, not its file: the same trial gives the same bytes wherever run
+  world.description = "stress trial of world " + nominal.name + " (trial seed " + std::to_string(seed) + ", sigma_xy " +
                       core::shortestText(sigmas.xy) + " m, sigma_yaw " + core::shortestText(sigmas.yaw) + " rad)";
   PerturbedWorld result;
   result.yaml = core::writeWorldYaml(world);

@@ -21,7 +21,7 @@ core::ActionType parseActionType(std::string_view name) {
   for (const core::ActionType type : {core::ActionType::kPick, core::ActionType::kPlace, core::ActionType::kHandoff}) {
     if (core::toString(type) == name) return type;
   }
-  throw std::runtime_error("unknown action type '" + std::string(name) + "'");
+  throw std::invalid_argument("unknown action type '" + std::string(name) + "'");
 }
 
 }  // namespace

@@ -315,6 +315,10 @@ TEST_CASE("outcomes round-trip through their JSON text", "[stress]") {
   CHECK(readOutcomesJson(writeOutcomesJson(outcomes)) == outcomes);
   CHECK_THROWS_WITH(readOutcomesJson("[{\"index\": 1}]"), "trial outcomes: /0/point: missing");
   CHECK_THROWS_WITH(readOutcomesJson("{}"), "trial outcomes: /: expected an array, got an object");
+  // found by fuzzing: an unknown action type escaped as an exception of another kind
+  nlohmann::json bad = nlohmann::json::parse(writeOutcomesJson(madeUpOutcomes()));
+  bad[0]["actions"][0]["type"] = "pick8";
+  CHECK_THROWS_WITH(readOutcomesJson(bad.dump()), "trial outcomes: /0/actions/0/type: unknown action type 'pick8'");
   // found by fuzzing: the parser's "last read" cut a two-byte character in half; the message
   // shows the half byte escaped
   CHECK_THROWS_WITH(readOutcomesJson("[{\"index\": 0.5\n \xD8\x82}]"),
