@@ -1,9 +1,9 @@
 #include "core/json_reader.h"
 
 #include <algorithm>
-#include <functional>
 #include <optional>
-#include <set>
+#include <stdexcept>
+#include <unordered_set>
 #include <vector>
 
 #include "core/input_text.h"
@@ -43,34 +43,42 @@ std::size_t offsetBeyondDepth(std::string_view text, std::size_t depth) {
   return text.size();
 }
 
-// Finds the first key that occurs twice in one object (nlohmann keeps the last silently).
-// Runs as the parser's callback; remembers the key's pointer. Throws TooDeep.
+// A first pass over the text with nlohmann's SAX interface, without building anything: finds
+// the first key that occurs twice in one object (nlohmann keeps the last silently) and refuses
+// nesting deeper than kMaxJsonNesting (throws TooDeep) before the document is built by a
+// recursive parser. Syntax errors are rethrown as nlohmann's own exceptions. (nlohmann's parser
+// callback would do the same in one pass, but it rescans the parent array at every object's
+// end: quadratic in the length of an array of objects, such as a plan's points.)
 template <class Json>
-class DuplicateKeyFinder {
+class StructureCheck {
  public:
-  bool operator()(int /*depth*/, typename Json::parse_event_t event, Json& parsed) {
-    switch (event) {
-      case Json::parse_event_t::object_start:
-      case Json::parse_event_t::array_start:
-        if (frames_.size() >= kMaxJsonNesting) throw TooDeep{};
-        frames_.push_back({event == Json::parse_event_t::object_start, {}, {}, 0});
-        break;
-      case Json::parse_event_t::key: {
-        Frame& frame = frames_.back();
-        frame.key = parsed.template get<std::string>();
-        if (!frame.keys.insert(frame.key).second && !duplicate_) duplicate_ = pointer();
-        break;
-      }
-      case Json::parse_event_t::object_end:
-      case Json::parse_event_t::array_end:
-        frames_.pop_back();
-        elementDone();
-        break;
-      case Json::parse_event_t::value:
-        elementDone();
-        break;
-    }
+  using number_integer_t = typename Json::number_integer_t;
+  using number_unsigned_t = typename Json::number_unsigned_t;
+  using number_float_t = typename Json::number_float_t;
+  using string_t = typename Json::string_t;
+  using binary_t = typename Json::binary_t;
+
+  bool null() { return value(); }
+  bool boolean(bool) { return value(); }
+  bool number_integer(number_integer_t) { return value(); }
+  bool number_unsigned(number_unsigned_t) { return value(); }
+  bool number_float(number_float_t, const string_t&) { return value(); }
+  bool string(string_t&) { return value(); }
+  bool binary(binary_t&) { return value(); }
+  bool start_object(std::size_t) { return open(true); }
+  bool start_array(std::size_t) { return open(false); }
+  bool end_object() { return close(); }
+  bool end_array() { return close(); }
+  bool key(string_t& key) {
+    Frame& frame = frames_.back();
+    frame.key = key;
+    if (!frame.keys.insert(key).second && !duplicate_) duplicate_ = pointer();
     return true;
+  }
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception& error) {
+    if (const auto* syntax = dynamic_cast<const typename Json::parse_error*>(&error)) throw *syntax;
+    if (const auto* range = dynamic_cast<const typename Json::out_of_range*>(&error)) throw *range;
+    throw std::runtime_error(error.what());
   }
 
   const std::optional<std::string>& duplicate() const { return duplicate_; }
@@ -78,13 +86,23 @@ class DuplicateKeyFinder {
  private:
   struct Frame {
     bool is_object = true;
-    std::set<std::string> keys;
+    std::unordered_set<std::string> keys;
     std::string key;        // objects: the current key
     std::size_t index = 0;  // arrays: the current element
   };
 
-  void elementDone() {
+  bool value() {
     if (!frames_.empty() && !frames_.back().is_object) ++frames_.back().index;
+    return true;
+  }
+  bool open(bool is_object) {
+    if (frames_.size() >= kMaxJsonNesting) throw TooDeep{};
+    frames_.push_back({is_object, {}, {}, 0});
+    return true;
+  }
+  bool close() {
+    frames_.pop_back();
+    return value();
   }
 
   std::string pointer() const {
@@ -107,10 +125,12 @@ Json parseJsonText(std::string_view text) {
     throw JsonProblem{"", "line " + std::to_string(problem->line) + ", column " + std::to_string(problem->column) +
                               ": " + problem->what};
   }
-  DuplicateKeyFinder<Json> finder;
+  StructureCheck<Json> check;
   Json document;
   try {
-    document = Json::parse(text.begin(), text.end(), std::ref(finder));
+    Json::sax_parse(text.begin(), text.end(), &check);
+    if (check.duplicate()) throw JsonProblem{*check.duplicate(), "duplicate key"};
+    document = Json::parse(text.begin(), text.end());
   } catch (const typename Json::parse_error& error) {
     // nlohmann's message has line and column; add the byte offset
     throw JsonProblem{"", "invalid JSON: " + withoutExceptionId(error.what()) + " (byte " +
@@ -129,7 +149,6 @@ Json parseJsonText(std::string_view text) {
     throw JsonProblem{"", lineAndColumn(text, offsetBeyondDepth(text, kMaxJsonNesting)) + ": nested deeper than " +
                               std::to_string(kMaxJsonNesting) + " levels"};
   }
-  if (finder.duplicate()) throw JsonProblem{*finder.duplicate(), "duplicate key"};
   return document;
 }
 

@@ -19,8 +19,8 @@ constexpr double kMegabyte = 1e6;
 std::string worldText(double bytes, bool refused) {
   std::string objects = "objects:\n", goals = "goals:\n";
   for (int i = 0; static_cast<double>(objects.size() + goals.size()) < bytes; ++i) {
-    const std::string name = "c" + std::to_string(i);
     // appended piece by piece: `"literal" + std::string` trips GCC 12's -Wrestrict
+    const std::string name = std::string("c").append(std::to_string(i));
     objects.append("  - {name: ").append(name).append(", pose: {xyz: [");
     objects.append(std::to_string(-40 + 0.06 * (i % 1000))).append(", ");
     objects.append(std::to_string(-40 + 0.06 * (i / 1000))).append(", 0.02]}}\n");
@@ -44,7 +44,7 @@ std::string planText(double bytes, bool refused) {
   trajectory.robot = "r0";
   trajectory.joint_names = {"shoulder_pan_joint", "shoulder_lift_joint", "elbow_joint",
                             "wrist_1_joint",      "wrist_2_joint",       "wrist_3_joint"};
-  constexpr double kBytesPerPoint = 150.0;  // a point as the plan writer writes it, roughly
+  constexpr double kBytesPerPoint = 190.0;  // a point as the plan writer writes it, roughly
   const auto points = static_cast<int>(std::ceil(bytes / kBytesPerPoint));
   for (int i = 0; i < points; ++i) {
     core::TrajectoryPoint& p = trajectory.points.emplace_back();
