@@ -3,13 +3,13 @@
 
 #include <catch2/catch.hpp>
 
-#include <numbers>
 #include <string>
 
 #include "core/asset_paths.h"
 #include "core/world_io.h"
 #include "core/world_loader.h"
 #include "tests/planner/plan_checks.h"
+#include "tests/sim/sim_test_worlds.h"
 #include "tools/script/scripted_plan.h"
 
 using namespace dashbed;
@@ -22,18 +22,7 @@ const core::LoadedWorld& defaultWorld() {
   return loaded;
 }
 
-/// " Q1 .. Q6" of robot r with its TCP at p_W pointing down.
-std::string downAt(int r, const Eigen::Vector3d& p_W) {
-  const auto& robot = (*defaultWorld().robots)[r];
-  core::Pose X_WT = core::Pose::Identity();
-  X_WT.linear() = Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  X_WT.translation() = p_W;
-  const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
-  REQUIRE(!solutions.empty());
-  std::string q;
-  for (const double v : solutions.front()) q.append(" ").append(std::to_string(v));
-  return q;
-}
+std::string downAt(int r, const Eigen::Vector3d& p_W) { return test::downAt(defaultWorld(), r, p_W); }
 
 std::vector<std::string> collisionsOf(const std::string& script) {
   return collisionsAlong(tools::planFromScript(defaultWorld(), script), defaultWorld());

@@ -2,6 +2,7 @@
 // Tiny worlds built in code for the simulator tests (no file parsing involved).
 
 #include <numbers>
+#include <stdexcept>
 #include <string>
 
 #include "core/asset_paths.h"
@@ -64,6 +65,20 @@ inline const core::LoadedWorld& defaultWorldWithoutGoals() {
     return core::validateWorld(std::move(world));
   }();
   return loaded;
+}
+
+/// " Q1 .. Q6": a configuration of robot r of `world` with its TCP at p_W pointing straight
+/// down, as an action script's "moves to" takes it (the IK solution nearest home).
+inline std::string downAt(const core::LoadedWorld& world, int r, const Eigen::Vector3d& p_W) {
+  const auto& robot = (*world.robots)[r];
+  core::Pose X_WT = core::Pose::Identity();
+  X_WT.linear() = Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
+  X_WT.translation() = p_W;
+  const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
+  if (solutions.empty()) throw std::runtime_error("downAt: no IK solution");
+  std::string q;
+  for (const double v : solutions.front()) q.append(" ").append(std::to_string(v));
+  return q;
 }
 
 }  // namespace dashbed::test

@@ -7,7 +7,6 @@
 #include <algorithm>
 #include <array>
 #include <map>
-#include <numbers>
 #include <optional>
 #include <string>
 
@@ -57,21 +56,7 @@ const sim::ExecutionEvent* event(const sim::Report& report, const std::string& k
 
 bool hasEvent(const sim::Report& report, const std::string& kind) { return event(report, kind) != nullptr; }
 
-/// A joint configuration of robot r putting the TCP at p_W pointing straight down.
-std::string downAt(int r, const Eigen::Vector3d& p_W) {
-  const auto& robot = (*defaultWorld().robots)[r];
-  core::Pose X_WT = core::Pose::Identity();
-  X_WT.linear() = Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
-  X_WT.translation() = p_W;
-  const auto solutions = robot.solveInWorld(X_WT, robot.spec->home);
-  REQUIRE(!solutions.empty());
-  std::string q;
-  for (double v : solutions.front()) {
-    q += ' ';
-    q += std::to_string(v);
-  }
-  return q;
-}
+std::string downAt(int r, const Eigen::Vector3d& p_W) { return test::downAt(defaultWorld(), r, p_W); }
 
 }  // namespace
 
