@@ -876,8 +876,8 @@ void Reader::checkGoals(const World& world) const {
   }
 }
 
-// Objects closer than this many grid cells are checked for overlap: a cell is as wide as the
-// widest object, so two objects whose centres lie further apart than one cell cannot touch.
+// The objects' centres in square cells as wide as the widest object: two objects can touch only
+// when their cells are the same or neighbours, so each is checked against those alone.
 struct ObjectGrid {
   double cell = 0.0;
   std::unordered_map<std::uint64_t, std::vector<std::size_t>> cells;

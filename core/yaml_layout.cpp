@@ -22,11 +22,11 @@ class LayoutHandler : public YAML::EventHandler {
  public:
   LayoutHandler(YamlLayout& layout, std::size_t max_depth) : layout_(layout), max_depth_(max_depth) {}
 
-  void OnDocumentStart(const YAML::Mark& mark) override { document_start_ = markOf(mark); }
+  void OnDocumentStart(const YAML::Mark& mark) override {
+    if (layout_.documents == 1) layout_.second_document = markOf(mark);
+  }
   void OnDocumentEnd() override {}
   void OnAnchor(const YAML::Mark&, const std::string& name) override { anchor_name_ = name; }
-
-  bool first_document = true;  ///< aliases are collected in the first document only
 
   void OnNull(const YAML::Mark& mark, YAML::anchor_t anchor) override { leaf(mark, anchor, "~"); }
   void OnScalar(const YAML::Mark& mark, const std::string&, YAML::anchor_t anchor,
@@ -34,7 +34,7 @@ class LayoutHandler : public YAML::EventHandler {
     leaf(mark, anchor, value);
   }
   void OnAlias(const YAML::Mark& mark, YAML::anchor_t anchor) override {
-    if (!first_document) return;
+    if (layout_.documents > 0) return;  // aliases are collected in the first document only
     if (const std::optional<std::string> path = nodePath("*")) {
       const auto found = anchors_.find(anchor);
       AliasUse use{*path, markOf(mark), {}, {}};
@@ -128,9 +128,6 @@ class LayoutHandler : public YAML::EventHandler {
     }
   }
 
- public:
-  TextMark document_start_;
-
  private:
   YamlLayout& layout_;
   std::size_t max_depth_;
@@ -147,11 +144,7 @@ YamlLayout scanYamlLayout(std::string_view text, std::size_t max_depth) {
   YAML::Parser parser(stream);
   LayoutHandler handler(layout, max_depth);
   try {
-    while (layout.documents < 2 && parser.HandleNextDocument(handler)) {
-      ++layout.documents;
-      handler.first_document = false;
-      layout.second_document = handler.document_start_;
-    }
+    while (layout.documents < 2 && parser.HandleNextDocument(handler)) ++layout.documents;
   } catch (const StopScan&) {
   }
   return layout;
