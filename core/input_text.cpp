@@ -48,6 +48,28 @@ bool isControl(unsigned char byte) { return byte < 0x20 || byte == 0x7F; }
 
 }  // namespace
 
+std::string formatLocation(const SourceLocation& where) {
+  const std::string file = where.file.empty() ? "<memory>" : where.file;
+  if (where.line <= 0) return file;
+  return file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
+}
+
+namespace {
+
+std::string locatedMessage(const SourceLocation& where, const std::string& field, const std::string& problem) {
+  std::string message = formatLocation(where);
+  if (!field.empty()) message.append(": ").append(field);
+  return message.append(": ").append(problem);
+}
+
+}  // namespace
+
+InputError::InputError(SourceLocation where, std::string field, const std::string& problem)
+    : std::runtime_error(printableText(locatedMessage(where, field, problem))),
+      where_(std::move(where)),
+      field_(printableText(field)),
+      problem_(printableText(problem)) {}
+
 std::string printableText(std::string_view text) {
   std::string out;
   out.reserve(text.size());

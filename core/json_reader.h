@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/input_text.h"
 #include "core/json_pointer.h"
 
 namespace dashbed::core {
@@ -48,7 +49,7 @@ class JsonReader {
   explicit JsonReader(const std::string& file) : file_(file.empty() ? "<memory>" : file) {}
 
   [[noreturn]] void fail(const std::string& pointer, const std::string& what) const {
-    throw Error(file_ + ": " + (pointer.empty() ? "/" : pointer) + ": " + what);
+    throw Error(core::SourceLocation{file_}, pointer.empty() ? "/" : pointer, what);
   }
 
   /// parseJsonText, failing as above.

@@ -67,8 +67,7 @@ std::string at(const std::string& pointer, std::size_t index) { return jsonPoint
 
 [[noreturn]] void fail(const std::string& file, const std::string& pointer,
                        const std::string& what) {
-  const std::string shown_file = file.empty() ? "<memory>" : file;
-  throw PlanError(shown_file + ": " + (pointer.empty() ? "/" : pointer) + ": " + what);
+  throw PlanError(SourceLocation{file}, pointer.empty() ? "/" : pointer, what);
 }
 
 // ---- JSON document -> Plan ----------------------------------------------------------------

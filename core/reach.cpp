@@ -68,19 +68,18 @@ void requireReachable(const World& world, const ReachMap& reach) {
     const ObjectSpec& object = world.objects[o];
     if (boxGrasps(object.size).empty()) {
       std::ostringstream msg;
-      msg << formatLocation(object.where) << ": objects[" << o << "].size: object '" << object.name << "' ("
+      msg << "object '" << object.name << "' ("
           << object.size.x() * 1000 << " x " << object.size.y() * 1000
           << " mm across) is too wide for the gripper: it opens to " << kHandeMaxOpening * 1000
           << " mm and keeps " << kGraspClearance * 1000 << " mm of it to spare across a pair of opposite sides";
-      throw WorldError(msg.str());
+      throw WorldError(object.where, "objects[" + std::to_string(o) + "].size", msg.str());
     }
     if (reach.start[o].empty()) {
       const Eigen::Vector3d p = object.X_WO.translation();
       std::ostringstream msg;
-      msg << formatLocation(object.where) << ": objects[" << o << "].pose: object '" << object.name
-          << "' at [" << p.x() << ", " << p.y() << ", " << p.z()
+      msg << "object '" << object.name << "' at [" << p.x() << ", " << p.y() << ", " << p.z()
           << "] is out of every robot's reach (no IK solution for any top or side grasp)";
-      throw WorldError(msg.str());
+      throw WorldError(object.where, "objects[" + std::to_string(o) + "].pose", msg.str());
     }
     const Region* region = world.goalRegionOf(object);
     if (region != nullptr && reach.goal[o].empty()) {
@@ -88,10 +87,9 @@ void requireReachable(const World& world, const ReachMap& reach) {
       const Goal* goal = world.goalOf(object);
       const auto goal_index = static_cast<std::size_t>(goal - world.goals.data());
       std::ostringstream msg;
-      msg << formatLocation(goal->where) << ": goals[" << goal_index
-          << "].region: region '" << region->name << "' (goal of object '" << object.name
+      msg << "region '" << region->name << "' (goal of object '" << object.name
           << "') is out of every robot's reach (no IK solution for placing it there)";
-      throw WorldError(msg.str());
+      throw WorldError(goal->where, "goals[" + std::to_string(goal_index) + "].region", msg.str());
     }
   }
 }

@@ -26,7 +26,7 @@ RobotSet::RobotSet(const World& world) {
     } catch (const WorldError&) {
       throw;
     } catch (const std::exception& e) {
-      throw WorldError(formatLocation(spec.where) + ": " + field + ": " + e.what());
+      throw WorldError(spec.where, field, e.what());
     }
   }
 }

@@ -14,16 +14,11 @@
 
 #include <Eigen/Core>
 
+#include "core/input_text.h"
 #include "core/pose.h"
 
 namespace dashbed::core {
 
-/// Where an element was written: file, 1-based line and column (0 when generated in memory).
-struct SourceLocation {
-  std::string file;
-  int line = 0;
-  int column = 0;
-};
 
 /// Linear RGB colour, components in [0, 1].
 struct Color {

@@ -17,9 +17,6 @@ class WorldError : public InputError {
   using InputError::InputError;
 };
 
-/// "file:line:column" (or just "file" when the line is unknown).
-std::string formatLocation(const SourceLocation& where);
-
 /// Parses and validates a world from YAML text; `file_name` is used in messages.
 /// Checks structure (unknown keys, types, missing fields, non-finite numbers, version),
 /// names (duplicates, dangling references) and geometry (overlaps, objects resting on a

@@ -18,9 +18,9 @@ void requireHomesWithinLimits(const World& world, const RobotSet& robots) {
       const double q = world.robots[r].home[j];
       if (q < joint.lower || q > joint.upper) {
         std::ostringstream msg;
-        msg << formatLocation(world.robots[r].where) << ": robots[" << r << "].home[" << j << "]: " << joint.name
-            << " at " << q << " rad is outside its limits [" << joint.lower << ", " << joint.upper << "]";
-        throw WorldError(msg.str());
+        msg << joint.name << " at " << q << " rad is outside its limits [" << joint.lower << ", " << joint.upper << "]";
+        throw WorldError(world.robots[r].where,
+                         "robots[" + std::to_string(r) + "].home[" + std::to_string(j) + "]", msg.str());
       }
     }
   }

@@ -32,12 +32,6 @@
 
 namespace dashbed::core {
 
-std::string formatLocation(const SourceLocation& where) {
-  const std::string file = where.file.empty() ? "<memory>" : where.file;
-  if (where.line <= 0) return file;
-  return file + ":" + std::to_string(where.line) + ":" + std::to_string(where.column);
-}
-
 namespace {
 
 /// Lists and maps nested deeper than this are refused (a world file nests 5 levels).
@@ -153,10 +147,10 @@ class Reader {
     const std::string field = path.empty() ? "(top level)" : path;
     if (const world_yaml::AliasUse* alias = aliasAbove(path)) {
       const SourceLocation at{file_, alias->mark.line + 1, alias->mark.column + 1};
-      throw WorldError(formatLocation(at) + ": " + field + ": " + message + " (the value of alias *" +
-                       alias->anchor + ", anchored at line " + std::to_string(alias->anchor_mark.line + 1) + ")");
+      throw WorldError(at, field, message + " (the value of alias *" + alias->anchor + ", anchored at line " +
+                                      std::to_string(alias->anchor_mark.line + 1) + ")");
     }
-    throw WorldError(formatLocation(locate(mark)) + ": " + field + ": " + message);
+    throw WorldError(locate(mark), field, message);
   }
   [[noreturn]] void fail(const Field& field, const std::string& message) const {
     fail(field.mark(), field.path, message);

@@ -143,8 +143,8 @@ bool isYawOnly(const Eigen::Matrix3d& R) {
 
 double yawOf(const Pose& X, const std::string& field) {
   if (!isYawOnly(X.linear())) {
-    throw WorldError("<memory>: " + field +
-                     ": only rotations about +z can be written (fixtures, objects, surfaces and "
+    throw WorldError(SourceLocation{}, field,
+                     "only rotations about +z can be written (fixtures, objects, surfaces and "
                      "regions turn about z only)");
   }
   return writableRpy(X.linear(), true).z();

@@ -13,21 +13,20 @@ Eigen::VectorXd homeConfiguration(const core::World& world, const CollisionScene
 void requireFreeHomes(const core::World& world, const CollisionScene& scene) {
   CollisionChecker checker(scene);
   const auto at_home = [&](std::size_t r) { return homeConfiguration(world, scene, static_cast<int>(r)); };
-  const auto field = [&](std::size_t r) {
-    return core::formatLocation(world.robots[r].where) + ": robots[" + std::to_string(r) + "].home: robot '" +
-           world.robots[r].name + "'";
+  const auto fail = [&](std::size_t r, const std::string& problem) {
+    throw core::WorldError(world.robots[r].where, "robots[" + std::to_string(r) + "].home",
+                           "robot '" + world.robots[r].name + "' " + problem);
   };
   for (std::size_t r = 0; r < world.robots.size(); ++r) {
     if (const std::string contact = checker.robotContact(static_cast<int>(r), at_home(r)); !contact.empty()) {
-      throw core::WorldError(field(r) + " collides at its home configuration (gripper open): " + contact +
-                             "; move its base or change its home angles");
+      fail(r, "collides at its home configuration (gripper open): " + contact +
+                  "; move its base or change its home angles");
     }
     for (std::size_t s = 0; s < r; ++s) {
       const std::string contact = checker.robotsContact(static_cast<int>(r), at_home(r), static_cast<int>(s), at_home(s));
       if (!contact.empty()) {
-        throw core::WorldError(field(r) + " collides with robot '" + world.robots[s].name +
-                               "' when both stand at their home configurations: " + contact +
-                               "; move their bases apart or change their home angles");
+        fail(r, "collides with robot '" + world.robots[s].name + "' when both stand at their home configurations: " +
+                    contact + "; move their bases apart or change their home angles");
       }
     }
   }

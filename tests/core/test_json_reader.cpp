@@ -9,8 +9,8 @@ using dashbed::core::JsonReader;
 
 namespace {
 
-struct TestError : std::runtime_error {
-  using std::runtime_error::runtime_error;
+struct TestError : dashbed::core::InputError {
+  using InputError::InputError;
 };
 
 }  // namespace
@@ -26,6 +26,16 @@ TEST_CASE("JSON reader: broken text is refused with where it breaks", "[json]") 
   CHECK_NOTHROW(dut.parse(std::string(200, '[') + std::string(200, ']')));
   const JsonReader<TestError> unnamed("");
   CHECK_THROWS_WITH(unnamed.parse("{"), Catch::Matchers::StartsWith("<memory>: /: invalid JSON: "));
+  // the parts of the message, apart
+  try {
+    dut.parse("[{\"x\": {\"k\": 1, \"k\": 2}}]");
+    FAIL("no error");
+  } catch (const TestError& e) {
+    CHECK(e.where().file == "f.json");
+    CHECK(e.where().line == 0);
+    CHECK(e.field() == "/0/x/k");
+    CHECK(e.problem() == "duplicate key");
+  }
 }
 
 TEST_CASE("JSON reader: typed access names the pointer, what it expected and what it got", "[json]") {

@@ -196,8 +196,8 @@ TEST_CASE("a saved trial replays to the same report", "[stress][sim]") {
   const core::Plan plan = core::loadPlanFile(dir / "plan.json");
   const sim::Report replay =
       sim::runPlan(*world.world, *world.robots, plan, trialDirectoryName(failed.index) + "/plan.json");
-  CHECK(sim::writeReportJson(replay) == core::readTextFile<std::runtime_error>(dir / "report.json", "report"));
-  CHECK(readOutcomesJson(core::readTextFile<std::runtime_error>(dir / "trial.json", "trial")) ==
+  CHECK(sim::writeReportJson(replay) == core::readTextFile<core::InputError>(dir / "report.json", "report"));
+  CHECK(readOutcomesJson(core::readTextFile<core::InputError>(dir / "trial.json", "trial")) ==
         std::vector<TrialOutcome>{failed});
   std::filesystem::remove_all(out);
 }
