@@ -12,13 +12,15 @@
 
 namespace dashbed::sim {
 
+/// Called after every simulation step with the simulation, the plan time and the monitor.
+using StepObserver = std::function<void(const Simulation&, double plan_time, const Monitor&)>;
+
 struct RunOptions {
   /// Simulated time after the plan's end, so the last placement can settle and be judged [s].
   /// Default: the world's checks.settle_time + 0.5 s.
   double tail_time = -1.0;
-  /// Called after every step with the simulation, the plan time and the monitor (renderers
-  /// hook in here).
-  std::function<void(const Simulation&, double plan_time, const Monitor&)> on_step;
+  /// Called after every step (renderers and samplers hook in here).
+  StepObserver on_step;
 };
 
 /// Builds a simulation of `world`, lets the objects settle for physics.settle_time with the

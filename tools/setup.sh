@@ -15,13 +15,16 @@ if [[ "${1:-}" == "--sanitize" ]]; then
   build_dir="$root/build-asan"
   # -O1 with line tables: readable sanitizer reports at a fraction of -O2 -g's compile time;
   # no MPI: OpenMPI's allocations trip LeakSanitizer (the MPI smoke test runs in build/)
-  cmake_args=(-DCMAKE_BUILD_TYPE=None "-DCMAKE_CXX_FLAGS=-O1 -g1" -DDASHBED_SANITIZE=ON -DDASHBED_MPI=OFF)
+  # no Python module: Python itself is not built with ASan (the Python tests run in build/)
+  cmake_args=(-DCMAKE_BUILD_TYPE=None "-DCMAKE_CXX_FLAGS=-O1 -g1" -DDASHBED_SANITIZE=ON -DDASHBED_MPI=OFF
+              -DDASHBED_PYTHON=OFF)
 fi
 build_target=all
 fuzz_packages=()
 if [[ "${1:-}" == "--fuzz" ]]; then
   build_dir="$root/build-fuzz"
-  cmake_args=(-DCMAKE_BUILD_TYPE=None "-DCMAKE_CXX_FLAGS=-O1 -g1" -DCMAKE_CXX_COMPILER=clang++ -DDASHBED_FUZZ=ON)
+  cmake_args=(-DCMAKE_BUILD_TYPE=None "-DCMAKE_CXX_FLAGS=-O1 -g1" -DCMAKE_CXX_COMPILER=clang++ -DDASHBED_FUZZ=ON
+              -DDASHBED_PYTHON=OFF)
   build_target=dashbed_fuzzers
   fuzz_packages=(clang libclang-rt-dev)     # libFuzzer and clang's sanitizers
 fi
@@ -41,6 +44,8 @@ packages=(
   catch2                                    # tests (Catch2 v2)
   python3                                   # tests: the folder map check
   libopenmpi-dev openmpi-bin                # stress campaigns across machines (mpirun)
+  pybind11-dev python3-dev                  # the Python package (build/python)
+  python3-numpy python3-pytest python3-matplotlib  # its arrays, its tests, the examples' plots
   "${fuzz_packages[@]}"
 )
 missing=()

@@ -26,14 +26,14 @@ std::string stillsDirectory(const CheckOutputs& outputs) {
 }
 
 RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
-                      const std::string& plan_file, const CheckOutputs& outputs) {
+                      const std::string& plan_file, const CheckOutputs& outputs, const StepObserver& observer) {
   core::validatePlanForWorld(plan, world, robots, plan_file);
   // the report names its plan from its own folder: the same run written elsewhere, the same bytes
   const std::string plan_name =
       outputs.report_json.empty()
           ? plan_file
           : core::pathFrom(plan_file, std::filesystem::absolute(outputs.report_json).parent_path());
-  RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs));
+  RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs), observer);
   if (!outputs.report_json.empty()) writeFile(outputs.report_json, writeReportJson(run.report));
   if (!outputs.junit.empty()) writeFile(outputs.junit, writeJUnitXml(run.report));
   return run;

@@ -25,9 +25,10 @@ std::string stillsDirectory(const CheckOutputs& outputs);
 
 /// Validates `plan` for `world` (throws core::PlanError naming `plan_file`), simulates it with
 /// the recordings and stills asked for (the report names the plan file relative to its own folder), writes the report files (throws std::runtime_error
-/// when one cannot be written) and returns the run.
+/// when one cannot be written) and returns the run. `observer`, when set, is called after
+/// every simulation step.
 RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
-                      const std::string& plan_file, const CheckOutputs& outputs);
+                      const std::string& plan_file, const CheckOutputs& outputs, const StepObserver& observer = {});
 
 /// The run for people: one line per action (unless `quiet`), then the verdict line.
 std::string summaryText(const Report& report, bool quiet);

@@ -143,8 +143,23 @@ class StillRecorder {
 
 }  // namespace
 
+namespace {
+
+/// `first`, then `then`, after every step.
+StepObserver chained(StepObserver first, StepObserver then) {
+  if (!first) return then;
+  return [first = std::move(first), then = std::move(then)](const Simulation& simulation, double plan_time,
+                                                            const Monitor& monitor) {
+    first(simulation, plan_time, monitor);
+    then(simulation, plan_time, monitor);
+  };
+}
+
+}  // namespace
+
 RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
-                              const std::string& plan_file, const RecordingOptions& video, const std::string& stills_dir) {
+                              const std::string& plan_file, const RecordingOptions& video, const std::string& stills_dir,
+                              const StepObserver& observer) {
   std::optional<RunRecorder> recorder;
   if (video.wanted()) recorder.emplace(world, robots, plan, video);
   std::optional<StillRecorder> stills;
@@ -152,12 +167,10 @@ RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& ro
   RunOptions options;
   if (recorder) recorder->attach(options);
   if (stills) {
-    auto frames = options.on_step;
-    options.on_step = [&, frames](const Simulation& simulation, double plan_time, const Monitor& monitor) {
-      if (frames) frames(simulation, plan_time, monitor);
-      stills->onStep(simulation, plan_time, monitor);
-    };
+    options.on_step = chained(options.on_step, [&](const Simulation& simulation, double plan_time,
+                                                   const Monitor& monitor) { stills->onStep(simulation, plan_time, monitor); });
   }
+  if (observer) options.on_step = chained(options.on_step, observer);
   RecordedRun run{runPlan(world, robots, plan, plan_file, options), 0};
   if (recorder) {
     recorder->finish();

@@ -56,9 +56,10 @@ struct RecordedRun {
 
 /// runPlan, recording what `recording` asks for and, when `stills_dir` is not empty, a still of
 /// every failed check as it happens and of the final state there, referenced from the report
-/// by paths relative to the stills folder's parent (STILLS/event_1_drop.png).
+/// by paths relative to the stills folder's parent (STILLS/event_1_drop.png). `observer`, when
+/// set, is called after every step as well.
 RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                               const std::string& plan_file, const RecordingOptions& recording,
-                              const std::string& stills_dir = "");
+                              const std::string& stills_dir = "", const StepObserver& observer = {});
 
 }  // namespace dashbed::sim

@@ -18,6 +18,7 @@
 #include "tools/cli/planner_options.h"
 #include "tools/cli/number_checks.h"
 #include "tools/parallel/parallel_trials.h"
+#include "tools/stress/campaign.h"
 #include "tools/stress/process_group.h"
 #include "tools/stress/stress.h"
 #include "tools/stress/stress_output.h"
@@ -116,23 +117,20 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
     shares += (shares.empty() ? "" : " + ") + std::to_string(rank_outcomes.size());
     for (TrialOutcome& o : rank_outcomes) outcomes.push_back(std::move(o));
   }
-  std::sort(outcomes.begin(), outcomes.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
-  const std::vector<PointSummary> points = summarize(settings, outcomes);
-  std::vector<TrialOutcome> worst;
-  for (const std::size_t i : worstTrials(outcomes, options.worst)) worst.push_back(outcomes[i]);
-  writeCampaignFiles(options.out_dir, info, *loaded.world, points, outcomes, worst);
-  saveTrials(options.out_dir, runner, worst, threads);
+  const CampaignResults results = summarizeCampaign(std::move(info), std::move(outcomes), options.worst);
+  writeCampaignFiles(options.out_dir, results.info, *loaded.world, results.points, results.outcomes, results.worst);
+  saveTrials(options.out_dir, runner, results.worst, threads);
 
-  std::cout << summaryText(info, points);
-  printWorst(worst, options.out_dir);
-  std::cout << outcomes.size() << " trials in " << core::fixedText(seconds, 1) << " s on " << group.size()
+  std::cout << summaryText(results.info, results.points);
+  printWorst(results.worst, options.out_dir);
+  std::cout << results.outcomes.size() << " trials in " << core::fixedText(seconds, 1) << " s on " << group.size()
             << (group.size() > 1 ? " processes (" + shares + " trials)" : std::string(" process")) << " x " << threads
             << " threads: "
-            << core::fixedText(3600.0 * static_cast<double>(outcomes.size()) / seconds, 0)
+            << core::fixedText(3600.0 * static_cast<double>(results.outcomes.size()) / seconds, 0)
             << " trials/hour; results in " << options.out_dir << "/\n";
-  if (!meetsAll(info, points)) throw CLI::RuntimeError(kExitCheckFailed);
+  if (!meetsAll(results.info, results.points)) throw CLI::RuntimeError(kExitCheckFailed);
 }
 
 // An error in an MPI job: one rank alone may have hit it while the others wait in the

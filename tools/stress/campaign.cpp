@@ -1,0 +1,16 @@
+#include "tools/stress/campaign.h"
+
+#include <algorithm>
+#include <utility>
+
+namespace dashbed::tools {
+
+CampaignResults summarizeCampaign(CampaignInfo info, std::vector<TrialOutcome> outcomes, int worst_count) {
+  std::sort(outcomes.begin(), outcomes.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
+  CampaignResults results{std::move(info), std::move(outcomes), {}, {}};
+  results.points = summarize(results.info.settings, results.outcomes);
+  for (const std::size_t i : worstTrials(results.outcomes, worst_count)) results.worst.push_back(results.outcomes[i]);
+  return results;
+}
+
+}  // namespace dashbed::tools
