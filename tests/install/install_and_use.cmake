@@ -1,8 +1,9 @@
 # `cmake --install` into a fresh prefix, then use it as a user would: build examples/
 # plan_and_simulate against find_package(dashbed) and run it (plan, simulate, every action
 # passes), and run the installed binary from another folder, which must find its world and
-# assets under the prefix without DASHBED_HOME.
-# -DBUILD_DIR= -DSOURCE_DIR= -DWORK_DIR=
+# assets under the prefix without DASHBED_HOME; with the Python package, import the installed
+# one and plan and check a world with it.
+# -DBUILD_DIR= -DSOURCE_DIR= -DWORK_DIR= [-DPYTHON= -DPYTHON_DIR=, the package's folder under the prefix]
 file(REMOVE_RECURSE ${WORK_DIR})
 set(prefix ${WORK_DIR}/prefix)
 unset(ENV{DASHBED_HOME})
@@ -43,3 +44,13 @@ if(NOT output MATCHES "PASS pick [a-z_0-9]+ by r[0-9]" OR NOT output MATCHES "\n
   message(FATAL_ERROR "the example's run did not pass every action:\n${output}")
 endif()
 message(STATUS "${output}")
+
+if(PYTHON)
+  set(ENV{PYTHONPATH} ${prefix}/${PYTHON_DIR})
+  # (no semicolons in the code: run_checked's arguments are a CMake list)
+  run_checked("the installed Python package" ${PYTHON} -c
+              "import dashbed\nr = dashbed.plan(dashbed.World.default())\nprint(dashbed.__file__, r.status, len(r.plan.actions))")
+  if(NOT output MATCHES "^${prefix}/${PYTHON_DIR}/dashbed/__init__.py solved [1-9]")
+    message(FATAL_ERROR "the installed Python package did not plan the default world:\n${output}")
+  endif()
+endif()
