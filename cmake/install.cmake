@@ -4,7 +4,7 @@
 # dashbed::controllers, dashbed::render and dashbed::sim_job, which they build on).
 include(CMakePackageConfigHelpers)
 
-set(dashbed_libraries dashbed_core dashbed_controllers dashbed_sim dashbed_render dashbed_sim_job dashbed_planner)
+set(dashbed_libraries dashbed_core dashbed_controllers dashbed_sim dashbed_render dashbed_replay dashbed_sim_job dashbed_planner)
 foreach(library IN LISTS dashbed_libraries)
   string(REPLACE "dashbed_" "" export_name ${library})
   set_target_properties(${library} PROPERTIES EXPORT_NAME ${export_name})
@@ -20,13 +20,17 @@ install(PROGRAMS ${PROJECT_SOURCE_DIR}/tools/export/dashbed_sync.py DESTINATION 
         RENAME dashbed-sync)
 
 # public headers, by folder; a folder's internal/ headers stay behind
-foreach(folder core controllers sim sim/render sim/job planner planner/collision planner/task_space
+foreach(folder core controllers sim sim/render sim/replay sim/job planner planner/collision planner/task_space
                planner/sampling planner/motion planner/search planner/scheduling)
   file(GLOB headers CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/${folder}/*.h)
   install(FILES ${headers} DESTINATION ${CMAKE_INSTALL_INCLUDEDIR}/dashbed/${folder})
 endforeach()
 
-install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/dashbed/assets)
+install(DIRECTORY ${PROJECT_SOURCE_DIR}/assets/ DESTINATION ${CMAKE_INSTALL_DATADIR}/dashbed/assets
+        PATTERN node_modules EXCLUDE)
+# of the HTML replay's npm packages, three.js's one file each replay inlines (tools/setup.sh installs it)
+install(FILES ${PROJECT_SOURCE_DIR}/assets/web/node_modules/three/build/three.min.js
+        DESTINATION ${CMAKE_INSTALL_DATADIR}/dashbed/assets/web/node_modules/three/build OPTIONAL)
 install(DIRECTORY ${PROJECT_SOURCE_DIR}/worlds/ DESTINATION ${CMAKE_INSTALL_DATADIR}/dashbed/worlds)
 
 set(config_dir ${CMAKE_INSTALL_LIBDIR}/cmake/dashbed)

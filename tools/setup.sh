@@ -44,10 +44,13 @@ packages=(
   catch2                                    # tests (Catch2 v2)
   python3                                   # tests: the folder map check
   libopenmpi-dev openmpi-bin                # stress campaigns across machines (mpirun)
+  chromium                                  # the HTML replay's browser tests
   pybind11-dev python3-dev                  # the Python package (build/python)
   python3-numpy python3-pytest python3-matplotlib  # its arrays, its tests, the examples' plots
   "${fuzz_packages[@]}"
 )
+# node and npm: the HTML replay's three.js and its tests' puppeteer-core (any recent node will do)
+command -v npm >/dev/null 2>&1 || packages+=(nodejs npm)
 missing=()
 for package in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$package" 2>/dev/null | grep -q "install ok installed" || missing+=("$package")
@@ -61,6 +64,13 @@ if ((${#missing[@]} > 0)); then
   export DEBIAN_FRONTEND=noninteractive
   apt-get update -qq
   apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+# the replay's npm packages, at the versions of assets/web/package-lock.json
+web="$root/assets/web"
+if [[ "$build_target" == all && ( ! -d "$web/node_modules" || "$web/package-lock.json" -nt "$web/node_modules" ) ]]; then
+  npm ci --prefix "$web" --no-audit --no-fund --loglevel=error
+  touch "$web/node_modules"
 fi
 
 cmake -S "$root" -B "$build_dir" "${cmake_args[@]}" >/dev/null

@@ -3,11 +3,14 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <optional>
 #include <sstream>
 #include <stdexcept>
 
 #include "core/asset_paths.h"
 #include "core/world_loader.h"
+#include "sim/motion_samples.h"
+#include "sim/replay/replay_html.h"
 
 namespace dashbed::sim {
 namespace {
@@ -33,8 +36,18 @@ RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, co
       outputs.report_json.empty()
           ? plan_file
           : core::pathFrom(plan_file, std::filesystem::absolute(outputs.report_json).parent_path());
-  RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs), observer);
+  std::optional<MotionSampler> sampler;
+  StepObserver observe = observer;
+  if (!outputs.html.empty()) {
+    sampler.emplace(world, robots, replay::kReplayRate);
+    observe = [&](const Simulation& simulation, double plan_time, const Monitor& monitor) {
+      sampler->onStep(simulation, plan_time);
+      if (observer) observer(simulation, plan_time, monitor);
+    };
+  }
+  RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs), observe);
   if (!outputs.report_json.empty()) writeFile(outputs.report_json, writeReportJson(run.report));
+  if (sampler) replay::writeReplayHtml(outputs.html, world, robots, sampler->samples(), run.report);
   if (!outputs.junit.empty()) writeFile(outputs.junit, writeJUnitXml(run.report));
   return run;
 }

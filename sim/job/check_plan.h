@@ -17,6 +17,7 @@ namespace dashbed::sim {
 struct CheckOutputs {
   std::string report_json;  ///< JSON report; the stills go beside it, into FILE.stills/
   std::string junit;        ///< JUnit XML report
+  std::string html;         ///< the run's HTML replay (sim/replay/replay_html.h)
   RecordingOptions recording;
 };
 

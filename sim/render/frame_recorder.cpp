@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <stdexcept>
 
+#include "core/number_text.h"
 #include "sim/render/scene_state.h"
 #include "sim/simulation.h"
 
@@ -17,8 +18,11 @@ constexpr double kFrameTimeTolerance = 1e-9;
 
 FrameRecorder::FrameRecorder(const core::World& world, const core::RobotSet& robots, RecorderSettings settings)
     : world_(world), settings_(std::move(settings)) {
-  if (!(settings_.fps > 0.0) || !std::isfinite(settings_.fps)) {
-    throw std::invalid_argument("RecorderSettings: fps must be positive (got " + std::to_string(settings_.fps) + ")");
+  // a frame is a simulation step at most: faster would repeat frames without end
+  const double step_rate = 1.0 / world.physics.time_step;
+  if (!(settings_.fps > 0.0) || !(settings_.fps <= step_rate)) {
+    throw std::invalid_argument("fps must be in (0, " + core::shortestText(step_rate) +
+                                "] (the simulation's step rate), got " + core::shortestText(settings_.fps));
   }
   if (!(settings_.from >= 0.0) || !std::isfinite(settings_.from) || !(settings_.until >= settings_.from)) {
     throw std::invalid_argument("RecorderSettings: the time window must have 0 <= from <= until (got from " +

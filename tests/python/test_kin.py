@@ -40,3 +40,9 @@ def test_out_of_reach_and_bad_input():
         dashbed.kin.fk([0.0, 1.0])
     with pytest.raises(ValueError):
         dashbed.kin.fk(Q, frame="elbow_of_nowhere")
+    with pytest.raises(ValueError):
+        dashbed.kin.fk([float("nan")] * 6)
+    with pytest.raises(ValueError):
+        dashbed.kin.ik(dashbed.kin.fk(Q), seed=[float("inf")] * 6)
+    # every joint, as simulate(samples=...) gives them: the fingers do not move the TCP
+    np.testing.assert_array_equal(dashbed.kin.fk(Q + [0.01, 0.01]), dashbed.kin.fk(Q))

@@ -48,10 +48,11 @@ def test_trajectories_as_arrays(one_cube_world, one_cube_plan):
 
 def test_save_and_load_round_trip(tmp_path, one_cube_plan):
     file = tmp_path / "p.json"
-    one_cube_plan.save(str(file))
-    assert one_cube_plan.file == str(file)
-    again = dashbed.Plan.load(str(file))
-    assert again.to_json() == one_cube_plan.to_json() == file.read_text()
+    saved = one_cube_plan.save(file)
+    assert saved.file == str(file) and one_cube_plan.file == ""
+    again = dashbed.Plan.load(file)
+    assert again.file == str(file)
+    assert again.to_json() == saved.to_json() == one_cube_plan.to_json() == file.read_text()
     assert dashbed.Plan.from_json(file.read_text()).to_json() == file.read_text()
 
 
@@ -77,6 +78,8 @@ def test_infeasible_and_bad_choices():
         dashbed.plan(world, method="fastest")
     with pytest.raises(ValueError):
         dashbed.plan(world, time_budget=-1.0)
+    with pytest.raises(ValueError):
+        dashbed.plan(world, time_budget=float("inf"))
 
 
 def test_same_seed_same_plan(one_cube_world):

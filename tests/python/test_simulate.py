@@ -12,10 +12,10 @@ from conftest import ONE_CUBE, cli, run_cli
 
 def test_reports_are_the_command_lines_bytes(tmp_path, one_cube_world, one_cube_plan):
     plan_file = tmp_path / "plan.json"
-    one_cube_plan.save(str(plan_file))
+    plan = one_cube_plan.save(plan_file)
     for side in ("py", "cli"):
         (tmp_path / side).mkdir()
-    report = dashbed.simulate(one_cube_world, one_cube_plan, report=str(tmp_path / "py/report.json"),
+    report = dashbed.simulate(one_cube_world, plan, report=str(tmp_path / "py/report.json"),
                               junit=str(tmp_path / "py/junit.xml"))
     cli("sim", plan_file, "--world", ONE_CUBE, "--report", tmp_path / "cli/report.json",
         "--junit", tmp_path / "cli/junit.xml")
@@ -111,3 +111,12 @@ def test_render_writes_frames(tmp_path, one_cube_world, one_cube_plan):
     assert sorted(p.name for p in (tmp_path / "frames").iterdir())[0].endswith(".png")
     with pytest.raises(ValueError):
         dashbed.render(one_cube_world, one_cube_plan)
+    with pytest.raises(ValueError):  # more frames than simulation steps
+        dashbed.render(one_cube_world, one_cube_plan, out=str(tmp_path / "many"), fps=1e9)
+
+
+def test_html_replay(tmp_path, one_cube_world, one_cube_plan):
+    report = dashbed.simulate(one_cube_world, one_cube_plan, html=str(tmp_path / "run.html"))
+    page = (tmp_path / "run.html").read_text()
+    assert page.startswith("<!DOCTYPE html>") and "dashbed replay: one_cube PASSED" in page
+    assert report.passed

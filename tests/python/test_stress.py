@@ -10,8 +10,7 @@ from conftest import ONE_CUBE, cli
 
 def test_a_campaign_is_the_command_lines(tmp_path, one_cube_world, one_cube_plan):
     plan_file = tmp_path / "plan.json"
-    one_cube_plan.save(str(plan_file))
-    result = dashbed.stress(one_cube_world, plan=one_cube_plan, trials=3, seed=4, sigma_xy=0.004, threads=2,
+    result = dashbed.stress(one_cube_world, plan=one_cube_plan.save(plan_file), trials=3, seed=4, sigma_xy=0.004, threads=2,
                             out=str(tmp_path / "py"))
     cli("stress", ONE_CUBE, "--plan", plan_file, "-n", 3, "--seed", 4, "--sigma-xy", 0.004, "-j", 2,
         "--out", tmp_path / "cli")
@@ -36,3 +35,5 @@ def test_min_success_and_bad_settings(one_cube_world, one_cube_plan):
         dashbed.stress(one_cube_world, plan=one_cube_plan, trials=0)
     with pytest.raises(ValueError):
         dashbed.stress(one_cube_world, plan=one_cube_plan, mode="replan")
+    with pytest.raises(ValueError):
+        dashbed.stress(one_cube_world, plan=one_cube_plan, min_success=float("nan"))

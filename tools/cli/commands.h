@@ -29,5 +29,6 @@ void addStressCommand(CLI::App& app);
 void addPlanCommand(CLI::App& app);
 void addCheckCommand(CLI::App& app);
 void addExportCommand(CLI::App& app);
+void addViewCommand(CLI::App& app);
 
 }  // namespace dashbed::tools

@@ -22,6 +22,7 @@ int main(int argc, char** argv) {
   addExportCommand(app);
   addSimCommand(app);
   addRenderCommand(app);
+  addViewCommand(app);
   addBenchCommand(app);
   addGraphCommand(app);
   addStressCommand(app);

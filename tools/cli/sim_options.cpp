@@ -11,6 +11,8 @@ namespace dashbed::tools {
 void addReportOptions(CLI::App& command, sim::CheckOutputs& outputs, bool& quiet) {
   command.add_option("--report", outputs.report_json, "write the JSON report here");
   command.add_option("--junit", outputs.junit, "write a JUnit XML report here");
+  command.add_option("--html", outputs.html,
+                     "write the run's interactive replay here: one self-contained HTML file (docs/replay.md)");
   command.add_flag("--quiet", quiet, "print only the verdict");
 }
 

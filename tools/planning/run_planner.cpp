@@ -5,6 +5,7 @@
 #include <iostream>
 #include <sstream>
 
+#include "core/number_text.h"
 
 namespace dashbed::tools {
 
@@ -17,7 +18,10 @@ planner::PlannerSettings plannerSettings(const PlannerChoice& choice) {
   } else {
     throw std::invalid_argument("unknown planning method '" + choice.method + "' (greedy or optimal)");
   }
-  if (!(choice.time_budget > 0.0)) throw std::invalid_argument("the time budget must be positive");
+  if (!(choice.time_budget > 0.0) || !(choice.time_budget <= kMaxTimeBudget)) {
+    throw std::invalid_argument("the time budget must be positive and at most " + core::shortestText(kMaxTimeBudget) +
+                                " s, got " + core::shortestText(choice.time_budget));
+  }
   if (choice.max_rounds < 1) throw std::invalid_argument("the number of rounds must be at least 1");
   settings.seed = choice.seed;
   settings.max_rounds = choice.max_rounds;

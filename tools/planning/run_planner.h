@@ -23,6 +23,10 @@ struct PlanningFailed : std::runtime_error {
   PlanningStatus status;
 };
 
+/// The longest planning budget taken [s] (about 11.6 days): beyond it the deadline's clock
+/// arithmetic would overflow.
+inline constexpr double kMaxTimeBudget = 1e6;
+
 struct PlannerChoice {
   std::string method = "greedy";  ///< "greedy" (Greedy-MM-DaSH) or "optimal" (MM-DaSH)
   std::uint64_t seed = 1;         ///< sampling seed: same world, method and seed give the same plan

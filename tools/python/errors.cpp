@@ -17,7 +17,7 @@ void raise(const py::object& type, const core::InputError& error) {
   exception.attr("line") = where.line > 0 ? py::object(py::int_(where.line)) : py::object(py::none());
   exception.attr("column") = where.column > 0 ? py::object(py::int_(where.column)) : py::object(py::none());
   exception.attr("field") = error.field().empty() ? py::object(py::none()) : py::object(py::str(error.field()));
-  exception.attr("problem") = py::str(error.where().file.empty() ? std::string(error.what()) : error.problem());
+  exception.attr("problem") = py::str(error.problem().empty() ? std::string(error.what()) : error.problem());
   PyErr_SetObject(type.ptr(), exception.ptr());
 }
 

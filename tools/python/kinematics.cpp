@@ -38,9 +38,15 @@ KinematicFrame frameOf(const std::optional<WorldHandle>& world, const std::strin
   return {std::shared_ptr<const core::RobotModel>(world->loaded, model), spec->X_WBase, spec->home};
 }
 
-core::ArmConfig armConfig(const Eigen::VectorXd& q, const char* what) {
-  if (q.size() != 6) throw std::invalid_argument(std::string(what) + ": expected the six arm joint angles, got " +
-                                                 std::to_string(q.size()) + " values");
+/// The six arm angles of q: six values, or every joint of the model (arm, then fingers) as
+/// simulate(samples=...) gives them. Throws std::invalid_argument for another size or a
+/// non-finite angle.
+core::ArmConfig armConfig(const Eigen::VectorXd& q, int model_positions, const char* what) {
+  if (q.size() != 6 && q.size() != model_positions) {
+    throw std::invalid_argument(std::string(what) + ": expected the six arm joint angles (or all " +
+                                std::to_string(model_positions) + " joints), got " + std::to_string(q.size()) + " values");
+  }
+  if (!q.allFinite()) throw std::invalid_argument(std::string(what) + ": the angles must be finite");
   core::ArmConfig config{};
   for (int i = 0; i < 6; ++i) config[static_cast<std::size_t>(i)] = q[i];
   return config;
@@ -69,14 +75,15 @@ void bindKinematics(py::module_& m) {
         const KinematicFrame context = frameOf(world, robot);
         const int link = context.model->linkIndex(frame);
         if (link < 0) throw std::invalid_argument("the model has no link '" + frame + "'");
-        const core::ArmConfig arm = armConfig(q, "fk");
+        const core::ArmConfig arm = armConfig(q, context.model->numPositions(), "fk");
         Eigen::VectorXd full = Eigen::VectorXd::Zero(context.model->numPositions());
         for (int i = 0; i < 6; ++i) full[i] = arm[static_cast<std::size_t>(i)];
         const core::Pose X = context.X_RefRoot * core::linkPoses(*context.model, full)[static_cast<std::size_t>(link)];
         return Eigen::Matrix4d(X.matrix());
       },
       py::arg("q"), py::arg("frame") = "tcp", py::arg("world") = py::none(), py::arg("robot") = "",
-      "The pose (4 x 4) of a link (tcp, tool0, ...) at arm configuration q (6 angles [rad]), in the model's "
+      "The pose (4 x 4) of a link (tcp, tool0, ...) at arm configuration q (6 angles [rad], or every joint as "
+      "samples give them), in the model's "
       "base_link, or in the world at `robot`'s base (default: the first) when a world is given.");
   kin.def(
       "ik",
@@ -86,7 +93,7 @@ void bindKinematics(py::module_& m) {
         const KinematicFrame context = frameOf(world, robot);
         const core::UrArmIk ik(*context.model, core::kUr5eDh, frame);
         const core::Pose X_RefT = rigidPose(pose);
-        const core::ArmConfig start = seed ? armConfig(*seed, "ik seed") : context.home.value_or(core::ArmConfig{});
+        const core::ArmConfig start = seed ? armConfig(*seed, context.model->numPositions(), "ik seed") : context.home.value_or(core::ArmConfig{});
         const std::vector<core::ArmConfig> solutions = ik.solveNearest(context.X_RefRoot.inverse() * X_RefT, start);
         py::array_t<double> out({static_cast<py::ssize_t>(solutions.size()), py::ssize_t{6}});
         auto view = out.mutable_unchecked<2>();

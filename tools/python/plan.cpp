@@ -7,6 +7,7 @@
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "tools/planning/run_planner.h"
 #include "tools/python/bindings.h"
@@ -55,10 +56,10 @@ py::dict trajectoryArrays(const core::RobotTrajectory& trajectory) {
   return d;
 }
 
-void writeFile(const std::string& path, const std::string& text) {
+void writeFile(const std::filesystem::path& path, const std::string& text) {
   std::ofstream out(path, std::ios::binary);
   out << text;
-  if (!out) throw std::runtime_error("cannot write " + path);
+  if (!out) throw std::runtime_error("cannot write " + path.string());
 }
 
 PlanningResult runPlanner(const WorldHandle& world, const tools::PlannerChoice& choice) {
@@ -89,18 +90,20 @@ void bindPlan(py::module_& m) {
       .def_readonly("end", &core::PlanAction::end, "[s]");
 
   py::class_<PlanHandle>(m, "Plan", "A timed multi-robot plan: one arm trajectory per robot, gripper commands, actions.")
-      .def_static("load", [](const std::string& path) {
-            return PlanHandle{std::make_shared<const core::Plan>(core::loadPlanFile(path)), path};
+      .def_static("load", [](const std::filesystem::path& path) {
+            return PlanHandle{std::make_shared<const core::Plan>(core::loadPlanFile(path)), path.string()};
           }, py::arg("path"), "Read a plan file (JSON). Raises PlanError with file and JSON pointer.")
       .def_static("from_json", [](const std::string& text, const std::string& name) {
             return PlanHandle{std::make_shared<const core::Plan>(core::parsePlanJson(text, name)), ""};
           }, py::arg("text"), py::arg("name") = "<memory>", "Read a plan from JSON text; `name` stands for the file in messages.")
       .def("to_json", [](const PlanHandle& p) { return core::writePlanJson(*p.plan); },
            "The plan file's text: the same bytes `dashbed plan -o` writes for the same world, method and seed.")
-      .def("save", [](PlanHandle& p, const std::string& path) {
+      .def("save", [](const PlanHandle& p, const std::filesystem::path& path) {
             writeFile(path, core::writePlanJson(*p.plan));
-            p.file = path;
-          }, py::arg("path"), "Write the plan file; reports of this plan then name it.")
+            return PlanHandle{p.plan, path.string()};
+          }, py::arg("path"),
+           "Write the plan file. Returns the same plan naming that file (reports of it name the file); this "
+           "plan is left as it is.")
       .def_property_readonly("file", [](const PlanHandle& p) { return p.file; },
                              "the file it was read from or saved to ('' for none)")
       .def_property_readonly("world", [](const PlanHandle& p) { return p.plan->world; }, "the world's name")

@@ -6,6 +6,7 @@
 #include <pybind11/eigen.h>
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "sim/job/check_plan.h"
 #include "sim/motion_samples.h"
@@ -48,12 +49,13 @@ py::dict samplesDict(const sim::MotionSamples& s) {
 struct RunRequest {
   std::string report_json;
   std::string junit;
+  std::string html;
   std::optional<double> sample_rate;
   sim::RecordingOptions recording;
 };
 
 ReportHandle runChecked(const WorldHandle& world, const PlanHandle& plan, const RunRequest& request) {
-  sim::CheckOutputs outputs{request.report_json, request.junit, request.recording};
+  sim::CheckOutputs outputs{request.report_json, request.junit, request.html, request.recording};
   std::optional<sim::MotionSampler> sampler;
   sim::StepObserver observer;
   if (request.sample_rate) {
@@ -128,7 +130,7 @@ void bindSimulation(py::module_& m) {
       .def_readonly("detail", &core::ReadinessCheck::detail);
 
   py::class_<ReportHandle>(m, "Report", "What the simulator's monitor measured, and the verdicts.")
-      .def_static("load", [](const std::string& path) { return ReportHandle{sim::loadReportFile(path), 0, std::nullopt}; },
+      .def_static("load", [](const std::filesystem::path& path) { return ReportHandle{sim::loadReportFile(path), 0, std::nullopt}; },
                   py::arg("path"), "Read a report file (JSON). Raises ReportError.")
       .def_property_readonly("passed", [](const ReportHandle& r) { return r.report.passed(); },
                              "every action, the execution and every readiness check passed")
@@ -178,13 +180,14 @@ void bindSimulation(py::module_& m) {
   m.def(
       "simulate",
       [](const WorldHandle& world, const PlanHandle& plan, const std::string& report, const std::string& junit,
-         std::optional<double> samples) {
-        return runChecked(world, plan, RunRequest{report, junit, samples, {}});
+         const std::string& html, std::optional<double> samples) {
+        return runChecked(world, plan, RunRequest{report, junit, html, samples, {}});
       },
-      py::arg("world"), py::arg("plan"), py::arg("report") = "", py::arg("junit") = "", py::arg("samples") = py::none(),
+      py::arg("world"), py::arg("plan"), py::arg("report") = "", py::arg("junit") = "", py::arg("html") = "",
+      py::arg("samples") = py::none(),
       py::call_guard<py::gil_scoped_release>(),
       "Execute a plan in the Bullet simulation and check every grasp, handoff and placement, as `dashbed sim` does. "
-      "report / junit: write the JSON report (stills beside it) / JUnit XML there. samples: a rate [Hz] at which "
+      "report / junit / html: write the JSON report (stills beside it) / JUnit XML / HTML replay there. samples: a rate [Hz] at which "
       "to sample the motion (Report.samples). Raises PlanError for a plan that does not fit the world. Releases "
       "the GIL: simulations in several threads run in parallel.");
 

@@ -40,9 +40,14 @@ StressResult runCampaign(const WorldHandle& world, StressRequest request) {
   const int threads =
       request.threads > 0 ? request.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const core::LoadedWorld& loaded = *world.loaded;
-  const std::string world_file = world.world().source_file.empty() ? "<memory>" : world.world().source_file;
+  if (request.min_success && !(*request.min_success >= 0.0 && *request.min_success <= 1.0)) {
+    throw std::invalid_argument("min_success must be in [0, 1]");
+  }
+  const std::string& source = world.world().source_file;
+  const std::string world_file = source.empty() ? "<memory>" : source;
   const std::string folder = request.out.empty() ? "." : request.out;
-  tools::CampaignInfo info{world.world().name, core::pathFrom(world_file, folder), "", settings, request.min_success};
+  tools::CampaignInfo info{world.world().name, source.empty() ? world_file : core::pathFrom(source, folder), "",
+                           settings, request.min_success};
   std::optional<core::Plan> plan;
   if (settings.mode == tools::StressMode::kReplay) {
     if (request.plan) {

@@ -3,6 +3,7 @@
 
 #include <pybind11/eigen.h>
 #include <pybind11/stl.h>
+#include <pybind11/stl/filesystem.h>
 
 #include "core/asset_paths.h"
 #include "core/world_io.h"
@@ -90,7 +91,8 @@ void bindWorld(py::module_& m) {
   py::class_<WorldHandle>(m, "World",
                           "A world: robots, fixtures, objects and goals, loaded and checked (syntax, geometry, "
                           "reach). Read-only.")
-      .def_static("load", [](const std::string& path) { return loadedWorld(core::loadWorld(path)); }, py::arg("path"),
+      .def_static("load", [](const std::filesystem::path& path) { return loadedWorld(core::loadWorld(path)); },
+                  py::arg("path"),
                   "Read and check a world file (YAML). Raises WorldError with file, line and field.")
       .def_static(
           "from_yaml",
