@@ -1,10 +1,12 @@
 #include "sim/motion_samples.h"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 #include <Eigen/Geometry>
 
+#include "sim/plan_executor.h"
 #include "sim/simulation.h"
 
 namespace dashbed::sim {
@@ -33,15 +35,42 @@ MotionSampler::MotionSampler(const core::World& world, const core::RobotSet& rob
     const core::RobotModel& model = *robots[0].model;
     for (const int joint : model.movableJoints()) samples_.joints.push_back(model.joints()[joint].name);
     for (const core::LinkModel& link : model.links()) samples_.links.push_back(link.name);
+    for (std::size_t j = 0; j < 6; ++j) effort_limits_[j] = model.joints()[model.movableJoints()[j]].max_effort;
+    for (std::size_t f = 0; f < 2 && 6 + f < model.movableJoints().size(); ++f) {
+      finger_links_[f] = model.joints()[model.movableJoints()[6 + f]].child_link;
+    }
   }
 }
 
-void MotionSampler::onStep(const Simulation& simulation, double plan_time) {
+void MotionSampler::onStep(const StepState& step) {
+  const Simulation& simulation = step.simulation;
+  const double plan_time = step.plan_time;
   const double due = static_cast<double>(samples_.times.size()) / samples_.rate;
   if (plan_time < 0.0 || plan_time + kSampleTimeTolerance < due) return;
   samples_.times.push_back(plan_time);
+  // each finger's normal force on objects, per robot
+  std::vector<std::array<double, 2>> squeeze(samples_.robots.size(), {0.0, 0.0});
+  for (const Contact& contact : simulation.contacts()) {
+    for (const auto& [finger, other] : {std::pair(contact.a, contact.b), std::pair(contact.b, contact.a)}) {
+      if (finger.kind != BodyRef::Kind::kRobot || other.kind != BodyRef::Kind::kObject) continue;
+      for (std::size_t f = 0; f < 2; ++f) {
+        if (finger.link == finger_links_[f]) squeeze[static_cast<std::size_t>(finger.index)][f] += contact.normal_force;
+      }
+    }
+  }
   for (std::size_t r = 0; r < samples_.robots.size(); ++r) {
-    const Eigen::VectorXd q = simulation.jointPositions(static_cast<int>(r));
+    const int robot = static_cast<int>(r);
+    const Eigen::VectorXd q = simulation.jointPositions(robot);
+    const core::JointReference reference = step.executor.reference(robot);
+    const std::array<double, 6>& tau = simulation.armTorques(robot);
+    double error = 0.0, effort = 0.0;
+    for (std::size_t j = 0; j < 6; ++j) {
+      error = std::max(error, std::abs(reference.q[static_cast<Eigen::Index>(j)] - q[static_cast<Eigen::Index>(j)]));
+      if (effort_limits_[j] > 0.0) effort = std::max(effort, std::abs(tau[j]) / effort_limits_[j]);
+    }
+    samples_.tracking_error.push_back(error);
+    samples_.effort_ratio.push_back(effort);
+    samples_.grip_force.push_back(0.5 * (squeeze[r][0] + squeeze[r][1]));
     samples_.joint_positions.insert(samples_.joint_positions.end(), q.data(), q.data() + q.size());
     for (std::size_t l = 0; l < samples_.links.size(); ++l) {
       appendPose(samples_.link_poses, simulation.linkPose(static_cast<int>(r), static_cast<int>(l)));

@@ -31,7 +31,7 @@ Report runPlan(const core::World& world, const core::RobotSet& robots, const cor
     if (executor.protectiveStop()) end = std::min(end, executor.protectiveStop()->t + tail);
     executor.step();
     monitor.observe(executor);
-    if (options.on_step) options.on_step(sim, executor.planTime(), monitor);
+    if (options.on_step) options.on_step(StepState{sim, executor, monitor, executor.planTime()});
   }
   Report report = monitor.finish(executor);
   report.plan_file = plan_file;

@@ -12,8 +12,18 @@
 
 namespace dashbed::sim {
 
-/// Called after every simulation step with the simulation, the plan time and the monitor.
-using StepObserver = std::function<void(const Simulation&, double plan_time, const Monitor&)>;
+class PlanExecutor;
+
+/// What an observer of a run sees after each step.
+struct StepState {
+  const Simulation& simulation;
+  const PlanExecutor& executor;  ///< the references, the grippers' controllers
+  const Monitor& monitor;        ///< the checks so far and their events
+  double plan_time;              ///< [s]
+};
+
+/// Called after every simulation step.
+using StepObserver = std::function<void(const StepState&)>;
 
 struct RunOptions {
   /// Simulated time after the plan's end, so the last placement can settle and be judged [s].

@@ -156,6 +156,7 @@ struct Simulation::Impl {
     std::vector<int> finger_links;
     std::unique_ptr<btMultiBodyConstraint> gear;
     std::vector<BodyRef> collider_refs;
+    std::array<double, 6> arm_torques{};  // the last setArmTorques
   };
   struct Object {
     std::unique_ptr<btRigidBody> body;
@@ -497,7 +498,10 @@ void Simulation::setJointPositions(int r, const Eigen::VectorXd& q) {
 void Simulation::setArmTorques(int r, const std::array<double, 6>& tau) {
   auto& robot = impl_->robots.at(r);
   for (int i = 0; i < 6; ++i) robot.body->addJointTorque(robot.q_to_mb_link[i], tau[i]);
+  robot.arm_torques = tau;
 }
+
+const std::array<double, 6>& Simulation::armTorques(int r) const { return impl_->robots.at(r).arm_torques; }
 
 void Simulation::setFingerServo(int r, const controllers::FingerServo& servo) {
   for (auto& motor : impl_->robots.at(r).finger_motors) {

@@ -63,6 +63,8 @@ class Simulation {
 
   /// Torques [Nm] on the six arm joints for the next step (the caller clamps them).
   void setArmTorques(int r, const std::array<double, 6>& tau);
+  /// The arm torques last set [Nm] (zero before any).
+  const std::array<double, 6>& armTorques(int r) const;
   /// Servo command applied to both finger joints of robot r from the next step on.
   void setFingerServo(int r, const controllers::FingerServo& servo);
 

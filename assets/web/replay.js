@@ -81,6 +81,21 @@ function laneLayout(robots, actions, duration) {
   }));
 }
 
+/**
+ * Robot r's values of a signal stored [sample][robot] as a polyline in a w x h box: x by time
+ * over [0, duration], y from 0 (bottom) to `top`.
+ */
+function signalPolyline(times, values, robots, r, duration, top, w, h) {
+  const points = [];
+  const n = times.length;
+  for (let i = 0; i < n; ++i) {
+    const x = duration > 0 ? (times[i] / duration) * w : 0;
+    const y = h - Math.min(1, values[i * robots + r] / top) * h;
+    points.push([x, y]);
+  }
+  return points;
+}
+
 /** Settings from the page's fragment: #t=16&camera=front&action=3&paused. */
 function fragmentSettings(hash) {
   const settings = {};
@@ -114,6 +129,8 @@ function main() {
   const robotNames = data.robots.map((r) => r.name);
   const linkStride = robotNames.length * data.links.length * 7;
   const objectStride = data.objects.length * 7;
+  const signals = {};
+  for (const [name, text] of Object.entries(data.signals)) signals[name] = decodeArray(text, Float32Array);
 
   // header
   const header = document.getElementById("header");
@@ -282,7 +299,66 @@ function main() {
     scrub.value = String(time);
     clock.textContent = `${fixed(time)} / ${fixed(duration)} s`;
     playhead.style.left = `calc(70px + (100% - 70px) * ${duration > 0 ? time / duration : 0})`;
+    drawPlots();
     draw();
+  }
+
+  // plots of the chosen robot's tracking error, effort and grip force against their limits
+  const plotSpecs = [["tracking_error", "tracking error [rad]"], ["effort_ratio", "effort / limit"],
+                     ["grip_force", "grip force [N]"]];
+  let plotRobot = 0;
+  let plotCanvases = [];
+  function plots(r) {
+    plotRobot = r;
+    const box = element("div", { id: "plots", "data-robot": robotNames[r] });
+    const choose = element("p", {}, "plots of ");
+    robotNames.forEach((name, k) => {
+      const button = element("button", { "data-plot-robot": name }, name);
+      button.disabled = k === r;
+      button.addEventListener("click", () => box.replaceWith(plots(k)));
+      choose.append(button, " ");
+    });
+    box.append(choose);
+    plotCanvases = plotSpecs.map(([name, label]) => {
+      const canvas = element("canvas", { width: "370", height: "80", "data-signal": name, title: label });
+      box.append(element("div", {}, label), canvas);
+      return canvas;
+    });
+    requestAnimationFrame(drawPlots);
+    return box;
+  }
+  function drawPlots() {
+    for (const canvas of plotCanvases) {
+      if (!canvas.isConnected) continue;
+      const name = canvas.dataset.signal, values = signals[name], limit = data.limits[name];
+      let top = limit;
+      for (let i = plotRobot; i < values.length; i += robotNames.length) top = Math.max(top, values[i]);
+      top *= 1.1;
+      const g = canvas.getContext("2d"), w = canvas.width, h = canvas.height;
+      g.clearRect(0, 0, w, h);
+      g.fillStyle = "#f6f6f3";
+      g.fillRect(0, 0, w, h);
+      g.strokeStyle = "#d03a2f";
+      g.setLineDash([4, 3]);
+      g.beginPath();
+      g.moveTo(0, h - (limit / top) * h);
+      g.lineTo(w, h - (limit / top) * h);
+      g.stroke();
+      g.setLineDash([]);
+      g.strokeStyle = "#2b6cb0";
+      g.beginPath();
+      signalPolyline(times, values, robotNames.length, plotRobot, duration, top, w, h)
+        .forEach(([x, y], i) => (i ? g.lineTo(x, y) : g.moveTo(x, y)));
+      g.stroke();
+      g.strokeStyle = "#1b1b1b";
+      const x = duration > 0 ? (time / duration) * w : 0;
+      g.beginPath();
+      g.moveTo(x, 0);
+      g.lineTo(x, h);
+      g.stroke();
+      g.fillStyle = "#444";
+      g.fillText(`limit ${Number(limit).toPrecision(3)}, top ${Number(top / 1.1).toPrecision(3)}`, 4, 11);
+    }
   }
 
   const playButton = document.getElementById("play");
@@ -373,6 +449,7 @@ function main() {
                                                        cell(`${Number(c.value).toPrecision(4)} / ${Number(c.limit).toPrecision(4)} ${c.unit}`, "num"),
                                                        cell(c.passed ? "ok" : "FAIL", c.passed ? "passed" : "failed")]),
                          ["check", "subject", "value / limit", ""]));
+    details.append(plots(plotRobot));
   }
 
   function selectAction(index) {
@@ -384,10 +461,12 @@ function main() {
     details.append(element("p", {}, `planned ${fixed(action.start)}-${fixed(action.end)} s: ` +
                                     (action.passed ? "passed" : "FAILED: " + action.failure)));
     if (action.measurements.length) {
-      details.append(table(action.measurements.map((m) => [cell(m.name), cell(m.text, "num"),
+      const measured = (m) => (m.text.startsWith(m.name + " ") ? m.text.slice(m.name.length + 1) : m.text);
+      details.append(table(action.measurements.map((m) => [cell(m.name), cell(measured(m), "num"),
                                                             cell(m.passed ? "ok" : "FAIL", m.passed ? "passed" : "failed")]),
                            ["check", "measured", ""]));
     }
+    details.append(plots(Math.max(0, robotNames.indexOf(action.robots[0]))));
     const related = report.events.filter((e) => e.action === action.id);
     if (related.length) details.append(element("p", {}, "events: " + related.map((e) => `${fixed(e.t)} s ${e.kind}`).join("; ")));
     const object = objects.find((o) => o.userData.name === action.object);
@@ -408,6 +487,7 @@ function main() {
     marker.position.set(...event.where);
     details.replaceChildren(element("h2", { class: "failed" }, event.kind));
     details.append(element("p", {}, `${fixed(event.t)} s: ${event.detail}` + (event.action ? ` (during ${event.action})` : "")));
+    details.append(plots(plotRobot));
     draw();
   }
 
@@ -425,7 +505,8 @@ function main() {
 }
 
 if (typeof module !== "undefined" && module.exports) {
-  module.exports = { decodeBase64, decodeArray, decodePoses, sampleAt, poseAt, laneLayout, fragmentSettings };
+  module.exports = { decodeBase64, decodeArray, decodePoses, sampleAt, poseAt, laneLayout, signalPolyline,
+                     fragmentSettings };
 } else {
   main();
 }

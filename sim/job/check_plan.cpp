@@ -40,9 +40,9 @@ RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, co
   StepObserver observe = observer;
   if (!outputs.html.empty()) {
     sampler.emplace(world, robots, replay::kReplayRate);
-    observe = [&](const Simulation& simulation, double plan_time, const Monitor& monitor) {
-      sampler->onStep(simulation, plan_time);
-      if (observer) observer(simulation, plan_time, monitor);
+    observe = [&](const StepState& step) {
+      sampler->onStep(step);
+      if (observer) observer(step);
     };
   }
   RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs), observe);

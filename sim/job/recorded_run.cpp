@@ -74,9 +74,9 @@ RunRecorder::RunRecorder(const core::World& world, const core::RobotSet& robots,
 }
 
 void RunRecorder::attach(RunOptions& run_options) {
-  run_options.on_step = [this](const Simulation& simulation, double plan_time, const Monitor& monitor) {
-    monitor_ = &monitor;
-    recorder_->onStep(simulation, plan_time);
+  run_options.on_step = [this](const StepState& step) {
+    monitor_ = &step.monitor;
+    recorder_->onStep(step.simulation, step.plan_time);
   };
 }
 
@@ -92,7 +92,10 @@ class StillRecorder {
     std::filesystem::create_directories(dir_);
   }
 
-  void onStep(const Simulation& simulation, double plan_time, const Monitor& monitor) {
+  void onStep(const StepState& step) {
+    const Simulation& simulation = step.simulation;
+    const double plan_time = step.plan_time;
+    const Monitor& monitor = step.monitor;
     last_state_ = render::captureScene(simulation);
     const auto& events = monitor.events();
     for (; stills_.size() < events.size();) {
@@ -148,10 +151,9 @@ namespace {
 /// `first`, then `then`, after every step.
 StepObserver chained(StepObserver first, StepObserver then) {
   if (!first) return then;
-  return [first = std::move(first), then = std::move(then)](const Simulation& simulation, double plan_time,
-                                                            const Monitor& monitor) {
-    first(simulation, plan_time, monitor);
-    then(simulation, plan_time, monitor);
+  return [first = std::move(first), then = std::move(then)](const StepState& step) {
+    first(step);
+    then(step);
   };
 }
 
@@ -167,8 +169,7 @@ RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& ro
   RunOptions options;
   if (recorder) recorder->attach(options);
   if (stills) {
-    options.on_step = chained(options.on_step, [&](const Simulation& simulation, double plan_time,
-                                                   const Monitor& monitor) { stills->onStep(simulation, plan_time, monitor); });
+    options.on_step = chained(options.on_step, [&](const StepState& step) { stills->onStep(step); });
   }
   if (observer) options.on_step = chained(options.on_step, observer);
   RecordedRun run{runPlan(world, robots, plan, plan_file, options), 0};

@@ -4,7 +4,7 @@
 //
 //   render::FrameRecorder recorder(world, robots, settings);
 //   sim::RunOptions options;
-//   options.on_step = [&](const sim::Simulation& s, double t, const sim::Monitor&) { recorder.onStep(s, t); };
+//   options.on_step = [&](const sim::StepState& step) { recorder.onStep(step.simulation, step.plan_time); };
 //   sim::runPlan(world, robots, plan, plan_file, options);
 //   recorder.finish();
 

@@ -235,6 +235,12 @@ std::string replayHtml(const core::World& world, const core::RobotSet& robots, c
   data["position_unit"] = unit;
   data["link_poses"] = base64Of(quantisedPoses(link_poses, unit));
   data["object_poses"] = base64Of(quantisedPoses(samples.object_poses, unit));
+  const auto floats = [](const std::vector<double>& values) { return std::vector<float>(values.begin(), values.end()); };
+  data["signals"] = {{"tracking_error", base64Of(floats(samples.tracking_error))},
+                     {"effort_ratio", base64Of(floats(samples.effort_ratio))},
+                     {"grip_force", base64Of(floats(samples.grip_force))}};
+  data["limits"] = {{"tracking_error", world.checks.tracking_error_limit}, {"effort_ratio", 1.0},
+                    {"grip_force", world.controller.grip_force}};
 
   Json objects = Json::array();
   for (const core::ObjectSpec& o : world.objects) {

@@ -81,6 +81,14 @@ def test_samples_follow_the_simulation(one_cube_world, one_cube_plan):
     k = n // 2
     fk = dashbed.kin.fk(s["joint_positions"][k, 0, :6], world=one_cube_world)
     np.testing.assert_allclose(s["link_poses"][k, 0, tcp, :3], fk[:3, 3], atol=1e-9)
+    # the signals agree with the report's extremes and the world's grip force
+    assert s["tracking_error"].shape == (n, 1) and s["effort_ratio"].shape == (n, 1)
+    assert np.max(s["tracking_error"]) <= report.robots[0].max_tracking_error + 1e-12
+    assert 0 < np.max(s["effort_ratio"]) <= report.robots[0].max_effort_ratio + 1e-12
+    pick = report.actions[0]
+    held = (s["times"] > pick.observed_end) & (s["times"] < report.actions[1].planned_start)
+    assert held.any() and np.all(s["grip_force"][held, 0] > 0.5 * one_cube_world.grip_force)
+    assert np.all(s["grip_force"][s["times"] < pick.planned_start, 0] == 0)
     with pytest.raises(ValueError):
         dashbed.simulate(one_cube_world, one_cube_plan, samples=0.0)
 

@@ -122,6 +122,14 @@ test("the default run: offline, the scene drawn, every action on the timeline, c
   assert.ok(await page.evaluate(() => window.dashbedReplay.time) > t0, "playing advances the time");
   fs.writeFileSync(path.join(dir, "default.png"), shot);
   await page.close();
+
+  // the saved run's replay, written again from its report, is the same file
+  dashbed("view", "default.report.json", "-o", "view.html");
+  assert.ok(fs.readFileSync(path.join(dir, "view.html")).equals(fs.readFileSync(html)), "dashbed view writes the same replay");
+  // a report of another world is refused
+  assert.throws(() => dashbed("view", "default.report.json", "--world", path.join(root, "worlds/shelf_2r_4o.yaml"),
+                              "-o", "other.html"), /is a run of world/);
+  assert.ok(!fs.existsSync(path.join(dir, "other.html")));
 });
 
 test("a failing run: clicking the failed action shows its failing check", async () => {
@@ -139,6 +147,11 @@ test("a failing run: clicking the failed action shows its failing check", async 
   const shown = await page.$eval("#details", (n) => ({ title: n.querySelector("h2").textContent, text: n.textContent }));
   assert.equal(shown.title, report.actions[failed].id);
   assert.ok(shown.text.includes(report.actions[failed].failure), "the failure text is shown");
+  // the acting robot's tracking, effort and grip force are plotted beside it
+  const plotted = await page.$eval("#plots", (n) => ({ robot: n.dataset.robot,
+                                                       signals: [...n.querySelectorAll("canvas")].map((c) => c.dataset.signal) }));
+  assert.equal(plotted.robot, report.actions[failed].robots[0]);
+  assert.deepEqual(plotted.signals, ["tracking_error", "effort_ratio", "grip_force"]);
   const time = await page.evaluate(() => window.dashbedReplay.time);
   const planned = report.actions[failed].planned;
   assert.ok(time >= planned.start - 1e-6 && time <= planned.end + 1e-6,

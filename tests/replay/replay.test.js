@@ -54,6 +54,13 @@ test("every action gets a bar in each of its robots' lanes", () => {
   assert.equal(replay.laneLayout(["r0"], [], 0)[0].bars.length, 0);
 });
 
+test("a robot's signal is drawn against time, clipped at the top", () => {
+  const times = new Float32Array([0, 5, 10]);
+  const values = new Float32Array([0, 9, 2, 9, 4, 99]);  // [sample][robot], two robots
+  assert.deepEqual(replay.signalPolyline(times, values, 2, 0, 10, 4, 100, 50), [[0, 50], [50, 25], [100, 0]]);
+  assert.deepEqual(replay.signalPolyline(times, values, 2, 1, 10, 9, 100, 50).map((p) => p[1]), [0, 0, 0]);
+});
+
 test("the fragment sets time, camera and action", () => {
   assert.deepEqual(replay.fragmentSettings("#t=16.5&camera=side%3Ar1&paused"), { t: "16.5", camera: "side:r1", paused: true });
   assert.deepEqual(replay.fragmentSettings(""), {});

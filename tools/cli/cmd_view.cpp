@@ -54,7 +54,8 @@ void runView(const ViewOptions& options) {
   const core::Plan plan = core::loadPlanFile(plan_file);
   sim::CheckOutputs outputs;
   outputs.html = options.output;
-  const sim::RecordedRun run = sim::checkPlan(*loaded.world, *loaded.robots, plan, plan_file.string(), outputs);
+  // named as the report names it: the replay is the one `--html` wrote beside the report
+  const sim::RecordedRun run = sim::checkPlan(*loaded.world, *loaded.robots, plan, saved.plan_file, outputs);
   if (const std::string difference = firstDifference(saved, run.report); !difference.empty()) {
     std::filesystem::remove(options.output);
     throw std::runtime_error("the run of " + plan_file.string() + " does not reproduce " + options.report_file +

@@ -42,6 +42,9 @@ py::dict samplesDict(const sim::MotionSamples& s) {
   d["joint_positions"] = arrayOf(s.joint_positions, {n, robots, static_cast<py::ssize_t>(s.joints.size())});
   d["link_poses"] = arrayOf(s.link_poses, {n, robots, static_cast<py::ssize_t>(s.links.size()), 7});
   d["object_poses"] = arrayOf(s.object_poses, {n, static_cast<py::ssize_t>(s.objects.size()), 7});
+  d["tracking_error"] = arrayOf(s.tracking_error, {n, robots});
+  d["effort_ratio"] = arrayOf(s.effort_ratio, {n, robots});
+  d["grip_force"] = arrayOf(s.grip_force, {n, robots});
   return d;
 }
 
@@ -60,9 +63,7 @@ ReportHandle runChecked(const WorldHandle& world, const PlanHandle& plan, const 
   sim::StepObserver observer;
   if (request.sample_rate) {
     sampler.emplace(world.world(), *world.loaded->robots, *request.sample_rate);
-    observer = [&](const sim::Simulation& simulation, double plan_time, const sim::Monitor&) {
-      sampler->onStep(simulation, plan_time);
-    };
+    observer = [&](const sim::StepState& step) { sampler->onStep(step); };
   }
   const std::string plan_file = plan.file.empty() ? "<memory>" : plan.file;
   sim::RecordedRun run = sim::checkPlan(world.world(), *world.loaded->robots, *plan.plan, plan_file, outputs, observer);
@@ -165,7 +166,8 @@ void bindSimulation(py::module_& m) {
           },
            "with simulate(samples=RATE): a dict of numpy arrays sampled at RATE Hz of plan time: times (N,), "
            "joint_positions (N, robots, joints), link_poses (N, robots, links, 7), object_poses (N, objects, 7) "
-           "(x y z [m], then the quaternion x y z w), and the names of robots, joints, links and objects")
+           "(x y z [m], then the quaternion x y z w), tracking_error [rad], effort_ratio and grip_force [N] (N, robots), "
+           "and the names of robots, joints, links and objects")
       .def_property_readonly("frames_written", [](const ReportHandle& r) { return r.frames_written; })
       .def("to_json", [](const ReportHandle& r) { return sim::writeReportJson(r.report); }, "the report file's text")
       .def("to_junit", [](const ReportHandle& r) { return sim::writeJUnitXml(r.report); }, "JUnit XML")
