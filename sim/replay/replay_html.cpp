@@ -158,6 +158,8 @@ std::string scriptSafe(const std::string& text) {
   return out.append(text, from, std::string::npos);
 }
 
+}  // namespace
+
 std::string htmlText(const std::string& text) {
   std::string out;
   for (const char c : core::printableText(text)) {
@@ -171,6 +173,8 @@ std::string htmlText(const std::string& text) {
   }
   return out;
 }
+
+namespace {
 
 void replaceMarker(std::string& page, const std::string& marker, const std::string& text) {
   const std::size_t at = page.find(marker);

@@ -19,6 +19,10 @@ namespace dashbed::replay {
 /// frame rate; the page interpolates between samples.
 inline constexpr double kReplayRate = 30.0;
 
+/// `text` for HTML element content and attribute values: printable (core::printableText), with
+/// & < > " written as entities.
+std::string htmlText(const std::string& text);
+
 /// The replay page of a run of `world` sampled as `samples` (every link of every robot) and judged
 /// as `report`. Throws std::runtime_error naming a file of assets/web/ or a mesh that cannot be read.
 std::string replayHtml(const core::World& world, const core::RobotSet& robots, const sim::MotionSamples& samples,

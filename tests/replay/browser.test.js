@@ -159,3 +159,30 @@ test("a failing run: clicking the failed action shows its failing check", async 
   await page.screenshot({ path: path.join(dir, "no_close.png") });
   await page.close();
 });
+
+test("a stress campaign's page: rates, and each worst trial's replay one click away", async () => {
+  const world = path.join(root, "tests/python/one_cube.yaml");
+  dashbed("stress", world, "-n", "3", "--sweep", "0.002,0.03", "--worst", "2", "--out", "stress", "--html",
+          "stress.html", "-j", "2");
+  const summary = JSON.parse(fs.readFileSync(path.join(dir, "stress/summary.json"), "utf8"));
+  const page = await browser.newPage();
+  const requests = [];
+  await page.setRequestInterception(true);
+  page.on("request", (request) => {
+    if (request.isNavigationRequest() && request.url().startsWith("file://")) return request.continue();
+    requests.push(request.url());
+    request.abort();
+  });
+  await page.goto(pathToFileURL(path.join(dir, "stress.html")).href, { waitUntil: "load" });
+  assert.equal(await page.$$eval("#rate-plot circle.point", (n) => n.length), summary.points.length);
+  const rates = await page.$$eval("#points tr td:nth-child(3)", (n) => n.map((c) => c.textContent));
+  assert.deepEqual(rates, summary.points.map((p) => `${(100 * p.success_rate).toFixed(1)} %`));
+  const links = await page.$$eval("#worst a", (n) => n.map((a) => a.getAttribute("href")));
+  assert.equal(links.length, summary.worst_trials.length);
+  assert.ok(links.length > 0, "a 3 cm offset fails some trial");
+  await Promise.all([page.waitForNavigation({ waitUntil: "load" }), page.click("#worst a")]);
+  await page.waitForSelector("body[data-ready='1']", { timeout: 20000 });
+  assert.equal(await page.$eval("header .verdict", (n) => n.textContent), "FAILED");
+  assert.deepEqual(requests, [], "nothing but the pages fetched");
+  await page.close();
+});

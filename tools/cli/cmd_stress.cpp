@@ -32,6 +32,7 @@ struct StressOptions {
   std::string plan_file;
   std::string mode = "replay";
   std::string out_dir = "stress_out";
+  std::string html;  // the campaign's page, with the worst trials' replays
   CampaignSettings settings;
   int threads = 0;  // 0: the machine's cores shared among the ranks on it
   int worst = 5;
@@ -121,7 +122,8 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
 
   const CampaignResults results = summarizeCampaign(std::move(info), std::move(outcomes), options.worst);
   writeCampaignFiles(options.out_dir, results.info, *loaded.world, results.points, results.outcomes, results.worst);
-  saveTrials(options.out_dir, runner, results.worst, threads);
+  saveTrials(options.out_dir, runner, results.worst, threads, /*replays=*/!options.html.empty());
+  if (!options.html.empty()) writeCampaignPage(options.html, options.out_dir, results.info, results.points, results.worst);
 
   std::cout << summaryText(results.info, results.points);
   printWorst(results.worst, options.out_dir);
@@ -205,6 +207,9 @@ void addStressCommand(CLI::App& app) {
                                                        "shared among its ranks)")
       ->capture_default_str();
   stress->add_option("--out,-o", options->out_dir, "output directory")->capture_default_str();
+  stress->add_option("--html", options->html,
+                     "write the campaign's page here: success rates, failure taxonomy and the worst trials, each "
+                     "with its HTML replay (docs/replay.md)");
   stress->add_option("--worst", options->worst, "save this many worst trials")
       ->capture_default_str()
       ->check(integerIn(0, std::numeric_limits<int>::max()));

@@ -18,6 +18,7 @@ struct StressRequest {
   std::optional<PlanHandle> plan;
   int threads = 0;
   std::string out;
+  std::string html;
   int worst = 5;
   std::optional<double> min_success;
 };
@@ -37,6 +38,7 @@ StressResult runCampaign(const WorldHandle& world, StressRequest request) {
   }
   if (request.threads < 0) throw std::invalid_argument("threads must be >= 0 (0: one per core)");
   if (request.worst < 0) throw std::invalid_argument("worst must be >= 0");
+  if (!request.html.empty() && request.out.empty()) throw std::invalid_argument("html needs out (the worst trials' folder)");
   const int threads =
       request.threads > 0 ? request.threads : static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   const core::LoadedWorld& loaded = *world.loaded;
@@ -75,7 +77,8 @@ StressResult runCampaign(const WorldHandle& world, StressRequest request) {
   result.passed = tools::meetsAll(r.info, r.points);
   if (!request.out.empty()) {
     tools::writeCampaignFiles(request.out, r.info, *loaded.world, r.points, r.outcomes, r.worst);
-    tools::saveTrials(request.out, runner, r.worst, threads);
+    tools::saveTrials(request.out, runner, r.worst, threads, /*replays=*/!request.html.empty());
+    if (!request.html.empty()) tools::writeCampaignPage(request.html, request.out, r.info, r.points, r.worst);
   }
   return result;
 }
@@ -120,7 +123,7 @@ void bindStress(py::module_& m) {
       [](const WorldHandle& world, std::optional<PlanHandle> plan, const std::string& mode, int trials,
          std::uint64_t seed, double sigma_xy, double sigma_yaw, double sigma_mass, double sigma_friction,
          std::vector<double> sweep, const std::string& method, double time_budget, int threads, const std::string& out,
-         int worst, std::optional<double> min_success) {
+         const std::string& html, int worst, std::optional<double> min_success) {
         StressRequest request;
         tools::CampaignSettings& s = request.settings;
         s.mode = tools::parseStressMode(mode);
@@ -133,6 +136,7 @@ void bindStress(py::module_& m) {
         request.plan = std::move(plan);
         request.threads = threads;
         request.out = out;
+        request.html = html;
         request.worst = worst;
         request.min_success = min_success;
         return runCampaign(world, std::move(request));
@@ -141,13 +145,14 @@ void bindStress(py::module_& m) {
       py::arg("seed") = defaults.seed, py::arg("sigma_xy") = defaults.sigmas.xy, py::arg("sigma_yaw") = defaults.sigmas.yaw,
       py::arg("sigma_mass") = defaults.sigmas.mass, py::arg("sigma_friction") = defaults.sigmas.friction,
       py::arg("sweep") = std::vector<double>{}, py::arg("method") = defaults.planner.method,
-      py::arg("time_budget") = defaults.planner.time_budget, py::arg("threads") = 0, py::arg("out") = "",
+      py::arg("time_budget") = defaults.planner.time_budget, py::arg("threads") = 0, py::arg("out") = "", py::arg("html") = "",
       py::arg("worst") = 5, py::arg("min_success") = py::none(), py::call_guard<py::gil_scoped_release>(),
       "A stress campaign as `dashbed stress` runs it: `trials` trials (per sweep point) whose objects start off "
       "their poses by Gaussian noise (sigma_xy [m], sigma_yaw [rad]; sigma_mass and sigma_friction of the log "
       "scales), each replaying `plan` (default: the plan for the world from the campaign's seed) or, with "
       "mode='replan', planning again. sweep: sigma_xy values to sweep. threads: 0 for one per core. out: also "
-      "write the campaign's files there (summary.json, junit.xml, trials.csv, the worst trials). Releases the GIL.");
+      "write the campaign's files there (summary.json, junit.xml, trials.csv, the worst trials); html: also the "
+      "campaign's page there, with each worst trial's replay. Releases the GIL.");
 }
 
 }  // namespace dashbed::python

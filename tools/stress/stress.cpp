@@ -253,8 +253,18 @@ TrialRun TrialRunner::perturbedWorld(std::size_t index) const {
   return run;
 }
 
-TrialRun TrialRunner::run(std::size_t index) const {
+TrialRun TrialRunner::run(std::size_t index, double sample_rate) const {
   TrialRun run;
+  std::optional<sim::MotionSampler> sampler;
+  const auto simulate = [&](const core::World& world, const core::RobotSet& robots, const std::string& plan_file) {
+    sim::RunOptions options;
+    if (sample_rate > 0.0) {
+      sampler.emplace(world, robots, sample_rate);
+      options.on_step = [&](const sim::StepState& step) { sampler->onStep(step); };
+    }
+    run.report = sim::runPlan(world, robots, *run.plan, plan_file, options);
+    if (sampler) run.motion = sampler->take();
+  };
   TrialOutcome& outcome = run.outcome;
   PerturbedWorld perturbed = perturb(index, outcome);
   run.world_yaml = perturbed.yaml;
@@ -263,7 +273,7 @@ TrialRun TrialRunner::run(std::size_t index) const {
   if (settings_.mode == StressMode::kReplay) {
     const core::RobotSet robots(perturbed.world);
     run.plan = nominal_plan_;
-    run.report = sim::runPlan(perturbed.world, robots, *run.plan, plan_file);
+    simulate(perturbed.world, robots, plan_file);
     classifyReport(*run.report, outcome);
     return run;
   }
@@ -275,7 +285,7 @@ TrialRun TrialRunner::run(std::size_t index) const {
     choice.seed = outcome.seed;
     run.plan = planForRun(loaded, choice);
     core::validatePlanForWorld(*run.plan, *loaded.world, *loaded.robots, plan_file);
-    run.report = sim::runPlan(*loaded.world, *loaded.robots, *run.plan, plan_file);
+    simulate(*loaded.world, *loaded.robots, plan_file);
   } catch (const PlanningFailed& e) {
     const bool timeout = e.status == PlanningStatus::kTimeout;
     outcome.primary = timeout ? FailureClass::kPlannerTimeout : FailureClass::kPlannerFailure;

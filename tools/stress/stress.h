@@ -17,6 +17,7 @@
 
 #include "core/plan.h"
 #include "core/world.h"
+#include "sim/motion_samples.h"
 #include "sim/report.h"
 #include "tools/parallel/parallel_trials.h"
 #include "tools/planning/run_planner.h"
@@ -168,6 +169,7 @@ struct TrialRun {
   std::string world_yaml;
   std::optional<core::Plan> plan;     ///< absent when planning failed
   std::optional<sim::Report> report;  ///< absent when planning failed
+  std::optional<sim::MotionSamples> motion;  ///< sampled when asked (TrialRunner::run)
 };
 
 /// Where a saved trial goes inside the output directory: "trial_<index>".
@@ -183,8 +185,9 @@ class TrialRunner {
               std::optional<core::Plan> nominal_plan);
 
   /// Runs global trial `index`. The report's plan file is "trial_<index>/plan.json", the name
-  /// the plan is saved under in the output directory.
-  TrialRun run(std::size_t index) const;
+  /// the plan is saved under in the output directory. With `sample_rate` > 0 [Hz] the motion is
+  /// sampled too (TrialRun::motion), for a replay.
+  TrialRun run(std::size_t index, double sample_rate = 0.0) const;
 
   /// Only the perturbed world of trial `index` (outcome: index, point, seed and perturbation;
   /// no plan, no report), without planning or simulating.

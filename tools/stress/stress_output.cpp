@@ -5,8 +5,13 @@
 #include <stdexcept>
 #include <string>
 
+#include "core/asset_paths.h"
+#include "core/robot_set.h"
+#include "core/world_io.h"
 #include "sim/render/image.h"
+#include "sim/replay/replay_html.h"
 #include "tools/parallel/parallel_trials.h"
+#include "tools/stress/stress_page.h"
 #include "tools/stress/stress_plot.h"
 
 namespace dashbed::tools {
@@ -46,15 +51,21 @@ void saveTrial(const std::filesystem::path& out_dir, const TrialRun& run) {
   if (run.plan) writeFile(dir / "plan.json", core::writePlanJson(*run.plan));
   if (run.report) writeFile(dir / "report.json", sim::writeReportJson(*run.report));
   writeFile(dir / "trial.json", writeOutcomesJson({run.outcome}));
+  if (run.motion && run.report) {
+    const core::World world = core::parseWorldYaml(run.world_yaml, (dir / "world.yaml").string());
+    const core::RobotSet robots(world);
+    replay::writeReplayHtml(dir / "replay.html", world, robots, *run.motion, *run.report);
+  }
 }
 
 void saveTrials(const std::filesystem::path& out_dir, const TrialRunner& runner, const std::vector<TrialOutcome>& worst,
-                int threads) {
+                int threads, bool replays) {
   parallelFor(worst.size(), threads, [&](std::size_t i) {
     // a trial without a plan has nothing to replay: its world is enough (and planning again
     // could take the whole planner budget)
     const bool planned = !worst[i].actions.empty();
-    TrialRun run = planned ? runner.run(worst[i].index) : runner.perturbedWorld(worst[i].index);
+    TrialRun run = planned ? runner.run(worst[i].index, replays ? replay::kReplayRate : 0.0)
+                           : runner.perturbedWorld(worst[i].index);
     if (!planned && run.outcome.objects == worst[i].objects) run.outcome = worst[i];
     if (!(run.outcome == worst[i])) {
       throw std::logic_error("trial " + std::to_string(worst[i].index) +
@@ -63,6 +74,14 @@ void saveTrials(const std::filesystem::path& out_dir, const TrialRunner& runner,
     }
     saveTrial(out_dir, run);
   });
+}
+
+void writeCampaignPage(const std::filesystem::path& page, const std::filesystem::path& out_dir,
+                       const CampaignInfo& info, const std::vector<PointSummary>& points,
+                       const std::vector<TrialOutcome>& worst) {
+  const std::filesystem::path folder = std::filesystem::absolute(page).parent_path();
+  const std::string trials = core::pathFrom(std::filesystem::absolute(out_dir), folder);
+  writeFile(page, campaignHtml(info, points, worst, trials == "." ? "" : trials, /*replays=*/true));
 }
 
 void writeCampaignFiles(const std::filesystem::path& out_dir, const CampaignInfo& info, const core::World& world,

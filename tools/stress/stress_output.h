@@ -16,14 +16,23 @@ namespace dashbed::tools {
 void prepareOutputDirectory(const std::filesystem::path& out_dir);
 
 /// Writes out_dir/trial_<index>/: world.yaml (the perturbed world), plan.json and report.json
-/// (when the trial had a plan) and trial.json (its outcome: seed, perturbation, classes).
+/// (when the trial had a plan), trial.json (its outcome: seed, perturbation, classes) and, when
+/// its motion was sampled, replay.html.
 void saveTrial(const std::filesystem::path& out_dir, const TrialRun& run);
 
 /// Runs the trials of `worst` again on `threads` threads, checks that each reproduces its
-/// recorded outcome (std::logic_error otherwise: a determinism bug) and saves it. A trial
-/// without a plan (planner failure) is not planned again: its world is saved.
+/// recorded outcome (std::logic_error otherwise: a determinism bug) and saves it, with its HTML
+/// replay (replay.html, sim/replay) when `replays`. A trial without a plan (planner failure) is
+/// not planned again: its world is saved.
 void saveTrials(const std::filesystem::path& out_dir, const TrialRunner& runner, const std::vector<TrialOutcome>& worst,
-                int threads);
+                int threads, bool replays = false);
+
+/// Writes the campaign's HTML page (tools/stress/stress_page.h) to `page`, linking the worst
+/// trials' replays in `out_dir` (saveTrials with replays). Throws std::runtime_error naming the
+/// file when it cannot be written.
+void writeCampaignPage(const std::filesystem::path& page, const std::filesystem::path& out_dir,
+                       const CampaignInfo& info, const std::vector<PointSummary>& points,
+                       const std::vector<TrialOutcome>& worst);
 
 /// Writes summary.json, junit.xml, trials.csv, trials.json (every outcome, with the actions'
 /// measurements) and, for a sweep, sweep.png into `out_dir`.
