@@ -1,11 +1,18 @@
 #include "core/asset_paths.h"
 
 #include <cstdlib>
+#include <fstream>
 #include <stdexcept>
 #include <system_error>
 #include <string>
 
 namespace dashbed::core {
+
+void writeFile(const std::filesystem::path& file, std::string_view text) {
+  std::ofstream out(file, std::ios::binary);
+  out.write(text.data(), static_cast<std::streamsize>(text.size()));
+  if (!out) throw std::runtime_error("cannot write " + file.string());
+}
 
 std::filesystem::path dataRoot() {
   if (const char* home = std::getenv("DASHBED_HOME"); home != nullptr && *home != '\0') {

@@ -19,6 +19,10 @@ std::filesystem::path robotUrdfPath(std::string_view model);
 /// worlds/default.yaml under dataRoot().
 std::filesystem::path defaultWorldPath();
 
+/// Writes `text` to `file` (replacing it, bytes as given). Throws std::runtime_error
+/// "cannot write FILE" when it cannot.
+void writeFile(const std::filesystem::path& file, std::string_view text);
+
 /// `file` as seen from `folder` ("../plans/p.json", "/" separators): how a written file names
 /// another, so that its bytes do not depend on where both were put. `file` as given when
 /// either is empty.

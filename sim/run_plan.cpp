@@ -1,6 +1,7 @@
 #include "sim/run_plan.h"
 
 #include <algorithm>
+#include <utility>
 
 #include "core/readiness.h"
 
@@ -9,6 +10,15 @@
 #include "sim/plan_executor.h"
 
 namespace dashbed::sim {
+
+StepObserver chained(StepObserver first, StepObserver then) {
+  if (!first) return then;
+  if (!then) return first;
+  return [first = std::move(first), then = std::move(then)](const StepState& step) {
+    first(step);
+    then(step);
+  };
+}
 
 Report runPlan(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                const std::string& plan_file, const RunOptions& options) {

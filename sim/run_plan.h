@@ -25,6 +25,9 @@ struct StepState {
 /// Called after every simulation step.
 using StepObserver = std::function<void(const StepState&)>;
 
+/// `first`, then `then`, after every step (either may be empty).
+StepObserver chained(StepObserver first, StepObserver then);
+
 struct RunOptions {
   /// Simulated time after the plan's end, so the last placement can settle and be judged [s].
   /// Default: the world's checks.settle_time + 0.5 s.

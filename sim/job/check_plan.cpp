@@ -1,7 +1,6 @@
 #include "sim/job/check_plan.h"
 
 #include <filesystem>
-#include <fstream>
 #include <iomanip>
 #include <optional>
 #include <sstream>
@@ -13,16 +12,6 @@
 #include "sim/replay/replay_html.h"
 
 namespace dashbed::sim {
-namespace {
-
-void writeFile(const std::string& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path);
-}
-
-}  // namespace
-
 std::string stillsDirectory(const CheckOutputs& outputs) {
   if (outputs.report_json.empty()) return "";
   return std::filesystem::path(outputs.report_json).replace_extension(".stills").string();
@@ -40,15 +29,12 @@ RecordedRun checkPlan(const core::World& world, const core::RobotSet& robots, co
   StepObserver observe = observer;
   if (!outputs.html.empty()) {
     sampler.emplace(world, robots, replay::kReplayRate);
-    observe = [&](const StepState& step) {
-      sampler->onStep(step);
-      if (observer) observer(step);
-    };
+    observe = chained([&](const StepState& step) { sampler->onStep(step); }, observer);
   }
   RecordedRun run = simulateAndRecord(world, robots, plan, plan_name, outputs.recording, stillsDirectory(outputs), observe);
-  if (!outputs.report_json.empty()) writeFile(outputs.report_json, writeReportJson(run.report));
+  if (!outputs.report_json.empty()) core::writeFile(outputs.report_json, writeReportJson(run.report));
   if (sampler) replay::writeReplayHtml(outputs.html, world, robots, sampler->samples(), run.report);
-  if (!outputs.junit.empty()) writeFile(outputs.junit, writeJUnitXml(run.report));
+  if (!outputs.junit.empty()) core::writeFile(outputs.junit, writeJUnitXml(run.report));
   return run;
 }
 

@@ -146,19 +146,6 @@ class StillRecorder {
 
 }  // namespace
 
-namespace {
-
-/// `first`, then `then`, after every step.
-StepObserver chained(StepObserver first, StepObserver then) {
-  if (!first) return then;
-  return [first = std::move(first), then = std::move(then)](const StepState& step) {
-    first(step);
-    then(step);
-  };
-}
-
-}  // namespace
-
 RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& robots, const core::Plan& plan,
                               const std::string& plan_file, const RecordingOptions& video, const std::string& stills_dir,
                               const StepObserver& observer) {
@@ -171,7 +158,7 @@ RecordedRun simulateAndRecord(const core::World& world, const core::RobotSet& ro
   if (stills) {
     options.on_step = chained(options.on_step, [&](const StepState& step) { stills->onStep(step); });
   }
-  if (observer) options.on_step = chained(options.on_step, observer);
+  options.on_step = chained(options.on_step, observer);
   RecordedRun run{runPlan(world, robots, plan, plan_file, options), 0};
   if (recorder) {
     recorder->finish();

@@ -4,7 +4,6 @@
 #include <cmath>
 #include <cstdint>
 #include <cstring>
-#include <fstream>
 #include <limits>
 #include <map>
 #include <stdexcept>
@@ -280,10 +279,7 @@ std::string replayHtml(const core::World& world, const core::RobotSet& robots, c
 
 void writeReplayHtml(const std::filesystem::path& file, const core::World& world, const core::RobotSet& robots,
                      const sim::MotionSamples& samples, const sim::Report& report) {
-  const std::string page = replayHtml(world, robots, samples, report);
-  std::ofstream out(file, std::ios::binary);
-  out << page;
-  if (!out) throw std::runtime_error("cannot write " + file.string());
+  core::writeFile(file, replayHtml(world, robots, samples, report));
 }
 
 }  // namespace dashbed::replay

@@ -1,7 +1,6 @@
 // dashbed plan [WORLD] -o plan.json: the DaSH planner on a world (the built-in default when
 // none is given). Exit 0 solved, 4 infeasible, 5 timeout, 3 bad world, 2 bad options.
 
-#include <fstream>
 #include <iostream>
 
 #include "core/asset_paths.h"
@@ -21,17 +20,11 @@ struct PlanOptions {
   bool json = false;
 };
 
-void writeText(const std::string& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + file);
-}
-
 void planJob(const PlanOptions& options) {
   const std::filesystem::path file = worldFileOrDefault(options.world_file);
   const core::LoadedWorld world = core::loadWorld(file);
   const planner::PlanResult result = planWorld(world, options.choice);
-  if (result.plan && !options.output.empty()) writeText(options.output, core::writePlanJson(*result.plan));
+  if (result.plan && !options.output.empty()) core::writeFile(options.output, core::writePlanJson(*result.plan));
   if (options.json) {
     std::cout << jsonText(planResultJson(result)) << "\n";
   } else {

@@ -46,11 +46,8 @@ core::Plan nominalPlan(const StressOptions& options, const core::LoadedWorld& lo
     description = options.plan_file;
     return core::loadPlanFile(options.plan_file);
   }
-  PlannerChoice choice = options.settings.planner;
-  choice.seed = options.settings.seed;
-  description = "planned (" + choice.method + ", seed " + std::to_string(choice.seed) + ")";
   try {
-    return planForRun(loaded, choice);
+    return plannedNominal(loaded, options.settings, description);
   } catch (const PlanningFailed& e) {
     std::cerr << "dashbed stress: no nominal plan: " << e.what() << "\n";
     throw CLI::RuntimeError(e.status == PlanningStatus::kTimeout ? kExitTimeout : kExitInfeasible);

@@ -2,13 +2,13 @@
 // dashbed.plan(): the DaSH planner as `dashbed plan` runs it.
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 #include <pybind11/numpy.h>
 #include <pybind11/stl.h>
 #include <pybind11/stl/filesystem.h>
 
+#include "core/asset_paths.h"
 #include "tools/planning/run_planner.h"
 #include "tools/python/bindings.h"
 
@@ -56,12 +56,6 @@ py::dict trajectoryArrays(const core::RobotTrajectory& trajectory) {
   return d;
 }
 
-void writeFile(const std::filesystem::path& path, const std::string& text) {
-  std::ofstream out(path, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + path.string());
-}
-
 PlanningResult runPlanner(const WorldHandle& world, const tools::PlannerChoice& choice) {
   const planner::PlanResult result = tools::planWorld(*world.loaded, choice);
   PlanningResult out{planner::toString(result.status), result.reason, tools::planResultJson(result), std::nullopt};
@@ -99,7 +93,7 @@ void bindPlan(py::module_& m) {
       .def("to_json", [](const PlanHandle& p) { return core::writePlanJson(*p.plan); },
            "The plan file's text: the same bytes `dashbed plan -o` writes for the same world, method and seed.")
       .def("save", [](const PlanHandle& p, const std::filesystem::path& path) {
-            writeFile(path, core::writePlanJson(*p.plan));
+            core::writeFile(path, core::writePlanJson(*p.plan));
             return PlanHandle{p.plan, path.string()};
           }, py::arg("path"),
            "Write the plan file. Returns the same plan naming that file (reports of it name the file); this "

@@ -56,11 +56,7 @@ StressResult runCampaign(const WorldHandle& world, StressRequest request) {
       plan = *request.plan->plan;
       info.plan = request.plan->file.empty() ? "<memory>" : core::pathFrom(request.plan->file, folder);
     } else {
-      // as `dashbed stress` does: the nominal plan from the campaign's seed
-      tools::PlannerChoice choice = settings.planner;
-      choice.seed = settings.seed;
-      plan = tools::planForRun(loaded, choice);
-      info.plan = "planned (" + choice.method + ", seed " + std::to_string(choice.seed) + ")";
+      plan = tools::plannedNominal(loaded, settings, info.plan);
     }
     core::validatePlanForWorld(*plan, *loaded.world, *loaded.robots, info.plan);
   } else {

@@ -5,6 +5,13 @@
 
 namespace dashbed::tools {
 
+core::Plan plannedNominal(const core::LoadedWorld& world, const CampaignSettings& settings, std::string& description) {
+  PlannerChoice choice = settings.planner;
+  choice.seed = settings.seed;
+  description = "planned (" + choice.method + ", seed " + std::to_string(choice.seed) + ")";
+  return planForRun(world, choice);
+}
+
 CampaignResults summarizeCampaign(CampaignInfo info, std::vector<TrialOutcome> outcomes, int worst_count) {
   std::sort(outcomes.begin(), outcomes.end(), [](const auto& a, const auto& b) { return a.index < b.index; });
   CampaignResults results{std::move(info), std::move(outcomes), {}, {}};

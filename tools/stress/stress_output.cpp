@@ -1,7 +1,6 @@
 #include "tools/stress/stress_output.h"
 
 #include <algorithm>
-#include <fstream>
 #include <stdexcept>
 #include <string>
 
@@ -16,12 +15,6 @@
 
 namespace dashbed::tools {
 namespace {
-
-void writeFile(const std::filesystem::path& file, const std::string& text) {
-  std::ofstream out(file, std::ios::binary);
-  out << text;
-  if (!out) throw std::runtime_error("cannot write " + file.string());
-}
 
 bool isTrialDirectoryName(const std::string& name) {
   return name.size() > 6 && name.rfind("trial_", 0) == 0 &&
@@ -47,10 +40,10 @@ void prepareOutputDirectory(const std::filesystem::path& out_dir) {
 void saveTrial(const std::filesystem::path& out_dir, const TrialRun& run) {
   const std::filesystem::path dir = out_dir / trialDirectoryName(run.outcome.index);
   std::filesystem::create_directories(dir);
-  writeFile(dir / "world.yaml", run.world_yaml);
-  if (run.plan) writeFile(dir / "plan.json", core::writePlanJson(*run.plan));
-  if (run.report) writeFile(dir / "report.json", sim::writeReportJson(*run.report));
-  writeFile(dir / "trial.json", writeOutcomesJson({run.outcome}));
+  core::writeFile(dir / "world.yaml", run.world_yaml);
+  if (run.plan) core::writeFile(dir / "plan.json", core::writePlanJson(*run.plan));
+  if (run.report) core::writeFile(dir / "report.json", sim::writeReportJson(*run.report));
+  core::writeFile(dir / "trial.json", writeOutcomesJson({run.outcome}));
   if (run.motion && run.report) {
     const core::World world = core::parseWorldYaml(run.world_yaml, (dir / "world.yaml").string());
     const core::RobotSet robots(world);
@@ -81,17 +74,17 @@ void writeCampaignPage(const std::filesystem::path& page, const std::filesystem:
                        const std::vector<TrialOutcome>& worst) {
   const std::filesystem::path folder = std::filesystem::absolute(page).parent_path();
   const std::string trials = core::pathFrom(std::filesystem::absolute(out_dir), folder);
-  writeFile(page, campaignHtml(info, points, worst, trials == "." ? "" : trials, /*replays=*/true));
+  core::writeFile(page, campaignHtml(info, points, worst, trials == "." ? "" : trials, /*replays=*/true));
 }
 
 void writeCampaignFiles(const std::filesystem::path& out_dir, const CampaignInfo& info, const core::World& world,
                         const std::vector<PointSummary>& points, const std::vector<TrialOutcome>& outcomes,
                         const std::vector<TrialOutcome>& worst) {
   const CampaignSettings& settings = info.settings;
-  writeFile(out_dir / "summary.json", writeSummaryJson(info, points, worst));
-  writeFile(out_dir / "junit.xml", writeStressJUnit(info, points));
-  writeFile(out_dir / "trials.csv", writeTrialsCsv(world, settings, outcomes));
-  writeFile(out_dir / "trials.json", writeOutcomesJson(outcomes));
+  core::writeFile(out_dir / "summary.json", writeSummaryJson(info, points, worst));
+  core::writeFile(out_dir / "junit.xml", writeStressJUnit(info, points));
+  core::writeFile(out_dir / "trials.csv", writeTrialsCsv(world, settings, outcomes));
+  core::writeFile(out_dir / "trials.json", writeOutcomesJson(outcomes));
   if (!settings.sweep_xy.empty()) {
     const std::string title = info.world + ": " + std::string(toString(settings.mode)) + ", " +
                               std::to_string(settings.trials) + " trials per point";
