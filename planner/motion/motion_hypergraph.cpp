@@ -64,13 +64,15 @@ MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpa
 
 MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
                                    ObjectSites sites, std::uint64_t seed, const RepresentationSettings& settings,
-                                   std::shared_ptr<const CollisionScene> scene)
+                                   std::shared_ptr<const CollisionScene> scene,
+                                   std::unique_ptr<TransitionPlanner> transitions)
     : world_(&world),
       task_space_(&task_space),
       seed_(seed),
       settings_(settings),
       scene_(std::move(scene)),
-      sites_(std::move(sites)) {
+      sites_(std::move(sites)),
+      sampler_(std::move(transitions)) {
   const ScopedTimer timer(construction_seconds_);
   settings_.validate();
   if (sites_.numObjects() != task_space.numObjects()) {
@@ -84,7 +86,7 @@ MotionHypergraph::MotionHypergraph(const core::LoadedWorld& world, const TaskSpa
     }
   }
   if (!scene_) scene_ = std::make_shared<const CollisionScene>(*world.world, *world.robots, settings_.collision);
-  sampler_ = std::make_unique<TransitionSampler>(world, task_space, *scene_, sites_, settings_.transitions);
+  if (!sampler_) sampler_ = std::make_unique<TransitionSampler>(world, task_space, *scene_, sites_, settings_.transitions);
   // every robot of a world is a UR5e: the first one's limits stand for all
   const core::RobotModel& model = *world.robots->robots().front().model;
   for (int j = 0; j < 6; ++j) {

@@ -128,10 +128,13 @@ class MotionHypergraph {
   /// The same on given object sites (objectSites(world) and, with set-aside hyperarcs in
   /// `task_space`, the set-aside sites of their objects) and, when `scene` is given, in that
   /// collision scene (built from `world` with settings.collision; built here when null).
-  /// Throws std::invalid_argument when a set-aside hyperarc's object has no set-aside site.
+  /// `transitions` is the transition planner P_trans (a TransitionSampler in that scene with
+  /// settings.transitions when null). Throws std::invalid_argument when a set-aside hyperarc's
+  /// object has no set-aside site.
   MotionHypergraph(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space, ObjectSites sites,
                    std::uint64_t seed, const RepresentationSettings& settings = {},
-                   std::shared_ptr<const CollisionScene> scene = nullptr);
+                   std::shared_ptr<const CollisionScene> scene = nullptr,
+                   std::unique_ptr<TransitionPlanner> transitions = nullptr);
   ~MotionHypergraph();
 
   const core::LoadedWorld& world() const { return *world_; }
@@ -277,7 +280,7 @@ class MotionHypergraph {
   std::unique_ptr<CollisionChecker> checker_;  // for move(..., around_idle) and clearOfIdle
   std::vector<core::ArmConfig> folded_;          // [robot] idleConfiguration(robot, kFolded)
   ObjectSites sites_;
-  std::unique_ptr<TransitionSampler> sampler_;
+  std::unique_ptr<TransitionPlanner> sampler_;  // P_trans
   TimingLimits timing_;
   int round_ = 1;
   double construction_seconds_ = 0.0;

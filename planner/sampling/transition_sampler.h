@@ -55,6 +55,7 @@
 #include "planner/task_space/task_space_hypergraph.h"
 #include "planner/sampling/timing.h"
 #include "planner/sampling/transition.h"
+#include "planner/sampling/transition_planner.h"
 
 namespace dashbed::planner {
 
@@ -97,7 +98,7 @@ struct TransitionSettings {
   void validate() const;
 };
 
-class TransitionSampler {
+class TransitionSampler final : public TransitionPlanner {
  public:
   /// All references must outlive the sampler.
   TransitionSampler(const core::LoadedWorld& world, const TaskSpaceHypergraph& task_space,
@@ -106,23 +107,23 @@ class TransitionSampler {
   /// Pick samples of pick hyperarc `hyperarc` (object at its start, or set-aside, site): one per grasp that
   /// passes the checks, IK solution nearest the robot's home configuration (a side grasp from
   /// above where that touches fewer sites). Deterministic.
-  std::vector<TransitionSample> pick(int hyperarc);
+  std::vector<TransitionSample> pick(int hyperarc) override;
 
   /// Place samples of place hyperarc `hyperarc` (object into its goal site) for a robot holding
   /// the object in `held`: one per fitting resting orientation that passes; into its set-aside
   /// site, in the orientation it started in. Deterministic.
-  std::vector<TransitionSample> place(int hyperarc, const Grasp& held);
+  std::vector<TransitionSample> place(int hyperarc, const Grasp& held) override;
 
   /// Up to `count` handoff samples of handoff hyperarc `hyperarc` for a giver holding the
   /// object in `giver_grasp`: handoff poses drawn from `rng` (object centre in the two robots'
   /// handoff zone, core::handoffZone with the `handoff` shape; orientation such that the
   /// giver's IK exists), receiver grasps enumerated. Makes at most 20 count draws, none when
   /// the robots have no handoff zone.
-  std::vector<TransitionSample> handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng, int count);
+  std::vector<TransitionSample> handoff(int hyperarc, const Grasp& giver_grasp, std::mt19937_64& rng, int count) override;
 
   /// The grasps a receiver may take of `object` from a giver holding it in `giver`: every
   /// handoff sample's receiver grasp is one of them. Deterministic, fixed order.
-  std::vector<Grasp> handoffGrasps(int object, const Grasp& giver) const;
+  std::vector<Grasp> handoffGrasps(int object, const Grasp& giver) const override;
 
   const TransitionSettings& settings() const { return settings_; }
 
