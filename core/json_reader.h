@@ -69,7 +69,8 @@ class JsonReader {
   /// missing (not such a file), not an integer, or another version than `version`.
   void formatVersion(const Json& document, std::string_view key, int version, std::string_view kind) const {
     const std::string pointer = jsonPointerAt("", key);
-    const std::string expected = "\"" + std::string(key) + "\": " + std::to_string(version);
+    std::string expected = "\"";  // appended: GCC 12 warns falsely on "literal" + std::string here
+    expected.append(key).append("\": ").append(std::to_string(version));
     const auto found = document.find(key);
     if (found == document.end()) fail(pointer, "missing: not a dashbed " + std::string(kind) + " (expected " + expected + ")");
     if (!found->is_number_integer()) {

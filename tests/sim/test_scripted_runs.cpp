@@ -211,12 +211,37 @@ TEST_CASE("a cube set aside on the table and picked up again passes, one set dow
   CHECK(on_cube.verdict == sim::Verdict::kFailed);
 }
 
-TEST_CASE("an arm sweeping through a resting cube knocks it", "[sim][scripted]") {
+TEST_CASE("an arm sweeping through a resting cube knocks it; 7 cm higher it passes", "[sim][scripted]") {
   // cube_1 rests at about (-0.405, -0.121); r0 sweeps its open gripper across it 15 mm up
-  const sim::Report report = simulate("r0 moves to" + downAt(0, {-0.405, -0.221, 0.785}) + "; r0 moves to" +
-                                      downAt(0, {-0.405, -0.021, 0.785}) + "; r0 moves home");
-  REQUIRE(hasEvent(report, "knocked object"));
-  CHECK_THAT(report.execution_failure, Catch::Matchers::Contains("cube_1"));
+  const auto sweep = [](double z) {
+    return simulate("r0 moves to" + downAt(0, {-0.405, -0.221, z}) + "; r0 moves to" + downAt(0, {-0.405, -0.021, z}) +
+                    "; r0 moves home");
+  };
+  const sim::Report low = sweep(0.785);
+  REQUIRE(hasEvent(low, "knocked object"));
+  CHECK_THAT(low.execution_failure, Catch::Matchers::Contains("cube_1"));
+  CHECK_FALSE(low.passed());
+  const sim::Report high = sweep(0.86);
+  INFO(high.execution_failure);
+  CHECK(high.events.empty());
+  CHECK(high.passed());
+}
+
+TEST_CASE("a carried cube swept through a resting one knocks it; 5 cm higher it passes", "[sim][scripted]") {
+  // r1 carries cube_0 across cube_2 (resting at about (0.406, 0.232), top at 0.79 m) with the
+  // held cube's centre at z, and puts it back where it was
+  const auto carry = [](double z) {
+    return simulate("r1 picks cube_0; r1 moves to" + downAt(1, {0.406, 0.10, z}) + "; r1 moves to" +
+                    downAt(1, {0.406, 0.36, z}) + "; r1 places cube_0 at 0.41 -0.125 0.77");
+  };
+  const sim::Report low = carry(0.80);
+  REQUIRE(hasEvent(low, "knocked object"));
+  CHECK_THAT(event(low, "knocked object")->detail, Catch::Matchers::StartsWith("cube_2 moved"));
+  CHECK_FALSE(low.passed());
+  const sim::Report high = carry(0.85);
+  INFO(high.execution_failure);
+  CHECK(high.events.empty());
+  CHECK(high.passed());
 }
 
 TEST_CASE("two runs of the same plan give byte-identical reports", "[sim][scripted]") {

@@ -1,8 +1,9 @@
 // Conflict resolution (resolveConflicts) checked from outside: every schedule it returns keeps
 // the rules of its temporal network (each robot's segments in order, a handoff's robots
 // starting together, moves arriving just in time or early and then waiting where they end,
-// objects' sites free when a motion passes through them) and has no robot-robot conflict; a
-// bound on the makespan drops the schedules not below it.
+// objects' sites free when a motion passes through them) and has no robot-robot conflict, by
+// the planner's check and by the independent one on the written plan (plan_checks.h); a bound
+// on the makespan drops the schedules not below it.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
@@ -10,12 +11,14 @@
 #include <string>
 #include <vector>
 
+#include "planner/plan_writer.h"
 #include "planner/search/hyperpath_search.h"
 #include "planner/sampling/object_sites.h"
 #include "planner/scheduling/robot_conflicts.h"
 #include "planner/scheduling/schedule_view.h"
 #include "planner/scheduling/scheduled_cbs.h"
 #include "tests/planner/dash_test_support.h"
+#include "tests/planner/plan_checks.h"
 
 using namespace dashbed;
 using namespace dashbed::planner;
@@ -138,6 +141,8 @@ TEST_CASE("a resolved schedule keeps its network's rules and lets a robot arrive
   CHECK(schedule.makespan >= resolved.unresolved_makespan);
   CHECK(requireScheduleRules(g.graph, history, schedule) >= 1);
   CHECK_FALSE(firstConflict(g.graph, schedule).has_value());
+  // and judged apart from the planner: the written plan, on the simulator's geometry
+  requireNoCollision(writePlan(g.graph, history, schedule), g.world);
 }
 
 TEST_CASE("conflict resolution keeps only schedules shorter than its bound", "[planner][dash]") {
@@ -164,6 +169,7 @@ TEST_CASE("conflict resolution keeps only schedules shorter than its bound", "[p
     CHECK(bounded.schedule->makespan <= free.schedule->makespan);
     requireScheduleRules(g.graph, history, *bounded.schedule);
     CHECK_FALSE(firstConflict(g.graph, *bounded.schedule).has_value());
+    requireNoCollision(writePlan(g.graph, history, *bounded.schedule), g.world);
   }
   SECTION("best first, nothing the search reaches is shorter than what it found: bounded there, it finds none") {
     REQUIRE(budget.focal_weight == 1.0);
