@@ -9,23 +9,29 @@
 //  - MM-DaSH's Next-Best Search (Alg. 5) returns the optimum, Greedy-MM-DaSH the greedy plan;
 //  - a grasp with no place is a dead end both queries back out of, and with no place at all
 //    they exhaust the hypergraph and the planner calls the object never placeable;
-//  - a handoff waits for its later tail vertex (the receiver still on its way).
+//  - a handoff waits for its later tail vertex (the receiver still on its way);
+//  - conflict resolution orders two robots reaching into one spot the way that ends sooner, and
+//    the plan it writes is collision-free by the independent check.
 #include <catch2/catch.hpp>
 
 #include <algorithm>
 #include <map>
 #include <memory>
+#include <numbers>
 #include <optional>
 #include <utility>
 #include <vector>
 
 #include "core/world_loader.h"
 #include "planner/motion/motion_hypergraph.h"
+#include "planner/plan_writer.h"
 #include "planner/planning_rounds.h"
 #include "planner/sampling/transition_planner.h"
 #include "planner/sampling/transition_sampler.h"
+#include "planner/scheduling/scheduled_cbs.h"
 #include "planner/search/hyperpath_search.h"
 #include "tests/planner/dash_test_support.h"
+#include "tests/planner/plan_checks.h"
 
 using namespace dashbed;
 using namespace dashbed::planner;
@@ -77,7 +83,10 @@ struct Instance {
   core::LoadedWorld world;
   TaskSpaceHypergraph task_space;
   std::unique_ptr<MotionHypergraph> graph;
-  Grasp g1, g2;  ///< two grasps of cube_0 (from the geometric sampler's picks: real ones)
+  /// [object] two grasps of it, from the geometric sampler's picks by its first picking robot
+  /// (real grasps, which the roadmaps of a robot holding it can check)
+  std::vector<std::vector<Grasp>> grasps;
+  Grasp g1, g2;  ///< cube_0's
 
   explicit Instance(const std::string& name)
       : world(core::loadWorld(testWorldPath(name))),
@@ -85,10 +94,17 @@ struct Instance {
     const CollisionScene scene(*world.world, *world.robots, RepresentationSettings{}.collision);
     const ObjectSites sites = objectSites(world);
     TransitionSampler sampler(world, task_space, scene, sites);
-    const std::vector<TransitionSample> picks = sampler.pick(hyperarc(TransitionKind::kPick, 0));
-    REQUIRE(picks.size() >= 2);
-    g1 = *picks[0].grasp_after;
-    g2 = *picks[1].grasp_after;
+    grasps.resize(static_cast<std::size_t>(task_space.numObjects()));
+    for (const TransitionHyperarc& arc : task_space.hyperarcs()) {
+      std::vector<Grasp>& of = grasps[static_cast<std::size_t>(arc.object)];
+      if (arc.kind != TransitionKind::kPick || !of.empty()) continue;
+      for (const TransitionSample& pick : sampler.pick(hyperarc(TransitionKind::kPick, arc.robot, -1, arc.object))) {
+        if (of.size() < 2) of.push_back(*pick.grasp_after);
+      }
+      REQUIRE(of.size() == 2);
+    }
+    g1 = grasps[0][0];
+    g2 = grasps[0][1];
   }
   /// Builds the motion hypergraph on `transitions` (call once).
   void build(std::unique_ptr<HandMadeTransitions> transitions) {
@@ -96,11 +112,11 @@ struct Instance {
                                                nullptr, std::move(transitions));
   }
 
-  /// The task-space hyperarc of `kind` by `robot` (giver) of cube_0 (into its goal).
-  int hyperarc(TransitionKind kind, int robot, int receiver = -1) const {
+  /// The task-space hyperarc of `kind` by `robot` (giver) of `object` (into its goal).
+  int hyperarc(TransitionKind kind, int robot, int receiver = -1, int object = 0) const {
     for (std::size_t h = 0; h < task_space.numHyperarcs(); ++h) {
       const TransitionHyperarc& arc = task_space.hyperarcs()[h];
-      if (arc.kind == kind && arc.robot == robot && arc.object == 0 && arc.receiver == receiver &&
+      if (arc.kind == kind && arc.robot == robot && arc.object == object && arc.receiver == receiver &&
           arc.rest_pose != RestPose::kAside) {
         return static_cast<int>(h);
       }
@@ -123,20 +139,30 @@ struct Instance {
     for (const int s : sites) set.set(s);
     return set;
   }
-  /// Duration of the move hyperarc the search takes (asserted planned).
+  /// Duration of the move hyperarc the search takes, of `robot` alone (grasp -1) or holding
+  /// cube_0 in `grasp` (asserted planned).
   Millis move(int robot, int grasp, const core::ArmConfig& from, const core::ArmConfig& to, const SiteSet& occupied) {
     const Move* m = graph->move(robot, grasp < 0 ? -1 : 0, grasp, from, to, occupied);
     REQUIRE(m != nullptr);
     return m->duration;
   }
-  /// The grasp id of `g` in the hypergraph (known once a sample holding it was added).
+  /// The grasp id of cube_0's grasp `g` in the hypergraph (known once a sample holding it was added).
   int graspId(const Grasp& g) const {
-    const std::vector<Grasp>& grasps = graph->graspsOf(0);
-    for (std::size_t i = 0; i < grasps.size(); ++i) {
-      if (sameGrasp(grasps[i], g)) return static_cast<int>(i);
+    const std::vector<Grasp>& seen = graph->graspsOf(0);
+    for (std::size_t i = 0; i < seen.size(); ++i) {
+      if (sameGrasp(seen[i], g)) return static_cast<int>(i);
     }
     FAIL("grasp not seen");
     return -1;
+  }
+  /// Robot r's configuration with the TCP at p_W pointing down (the IK solution nearest home).
+  core::ArmConfig reaching(int robot, const Eigen::Vector3d& p_W) const {
+    core::Pose X_WT = core::Pose::Identity();
+    X_WT.linear() = Eigen::AngleAxisd(std::numbers::pi, Eigen::Vector3d::UnitX()).toRotationMatrix();
+    X_WT.translation() = p_W;
+    const std::vector<core::ArmConfig> solutions = (*world.robots)[robot].solveInWorld(X_WT, home(robot));
+    REQUIRE_FALSE(solutions.empty());
+    return solutions.front();
   }
 };
 
@@ -153,11 +179,11 @@ TransitionMotion motion(int robot, const core::ArmConfig& from, const core::ArmC
 }
 
 TransitionSample sample(int hyperarc, TransitionKind kind, std::vector<TransitionMotion> motions, Millis duration,
-                        std::optional<Grasp> before, std::optional<Grasp> after) {
+                        std::optional<Grasp> before, std::optional<Grasp> after, int object = 0) {
   TransitionSample s;
   s.hyperarc = hyperarc;
   s.kind = kind;
-  s.object = 0;
+  s.object = object;
   s.motions = std::move(motions);
   s.duration = duration;
   s.grasp_before = std::move(before);
@@ -166,7 +192,7 @@ TransitionSample sample(int hyperarc, TransitionKind kind, std::vector<Transitio
   return s;
 }
 
-HeldObject heldIn(const Grasp& g) { return {0, g.X_OT.inverse(), true}; }
+HeldObject heldIn(const Grasp& g, int object = 0) { return {object, g.X_OT.inverse(), true}; }
 
 /// One robot, one cube: two picks in grasps g1 and g2, two places for each grasp. The pick near
 /// home (g1) starts first but is slow; the far one (g2) is fast. Each transition turns the base
@@ -358,4 +384,80 @@ TEST_CASE("a handoff starts when the later of its tail vertices is reached: the 
   const Millis receiver_done = h.steps[2].start + 1000 + instance.move(1, -1, turned(1, 1.05), instance.home(1), at_goal);
   const Millis giver_done = receiver_there + 2000 + instance.move(0, -1, turned(0, 0.35), instance.home(0), at_goal);
   CHECK(h.makespan() == std::max(receiver_done, giver_done));
+}
+
+TEST_CASE("conflict resolution orders two robots reaching into one spot the way that ends sooner", "[search][conflict]") {
+  Instance instance("hand_made_2r_2c.yaml");
+  auto transitions = std::make_unique<HandMadeTransitions>();
+  // each robot's pick reaches into the middle of the table one second after it starts, its TCP
+  // where the other's goes, and is back out at 2 s; r0's pick ends then, r1's holds on to 8 s.
+  // Their places take 1 s and 2.5 s.
+  const core::ArmConfig mid0 = instance.reaching(0, {0.0, 0.0, 0.95}), mid1 = instance.reaching(1, {0.0, 0.0, 0.95});
+  const core::ArmConfig out0 = instance.reaching(0, {-0.3, 0.0, 1.0}), out1 = instance.reaching(1, {0.3, 0.0, 1.0});
+  const Millis pick_duration[2] = {2000, 8000}, place_duration[2] = {1000, 2500};
+  for (int r = 0; r < 2; ++r) {
+    const Grasp& g = instance.grasps[static_cast<std::size_t>(r)][0];
+    const int pick = instance.hyperarc(TransitionKind::kPick, r, -1, r);
+    const int place = instance.hyperarc(TransitionKind::kPlace, r, -1, r);
+    TransitionMotion reach;
+    reach.robot = r;
+    reach.keys = {{0, r == 0 ? out0 : out1}, {1000, r == 0 ? mid0 : mid1}, {2000, r == 0 ? out0 : out1}};
+    reach.finger = {0.02, 0.02};
+    reach.held = {heldIn(g, r), heldIn(g, r)};
+    transitions->picks[pick] = {sample(pick, TransitionKind::kPick, {reach}, pick_duration[r], std::nullopt, g, r)};
+    transitions->places[place] = {sample(place, TransitionKind::kPlace,
+                                         {motion(r, instance.turned(r, 0.4), instance.turned(r, 0.45), place_duration[r],
+                                                 heldIn(g, r))},
+                                         place_duration[r], g, std::nullopt, r)};
+  }
+  instance.build(std::move(transitions));
+  const SearchResult found = HyperpathSearch(*instance.graph).greedy({});
+  REQUIRE(found.status == SearchStatus::kFound);
+  const TransitionHistory& history = *found.plan;
+
+  // the optimistic schedule has both robots in the middle at once
+  ConflictResolutionBudget root;
+  root.max_nodes = 1;
+  const ConflictResult unresolved = resolveConflicts(*instance.graph, history, root);
+  REQUIRE(unresolved.status == ConflictStatus::kBudget);
+  CHECK_THAT(unresolved.reason, Catch::Matchers::Contains("collide at t = "));
+
+  ConflictResolutionBudget budget;
+  budget.max_nodes = 200;
+  const ConflictResult resolved = resolveConflicts(*instance.graph, history, budget);
+  INFO(resolved.reason);
+  REQUIRE(resolved.status == ConflictStatus::kResolved);
+  const Schedule& schedule = *resolved.schedule;
+  // The known answer: one pick waits until the other has ended (conflict resolution orders
+  // whole items), the waiting robot standing where it was, so its timeline from there on is
+  // delayed and nothing else changes. The order with the shorter makespan wins.
+  std::map<int, Millis> start, end, done;  // robot -> its pick's start and end, its last motion's end
+  for (const ScheduledTransition& step : history.steps) {
+    const TransitionSample& s = instance.graph->transition(step.transition).sample;
+    if (s.kind != TransitionKind::kPick) continue;
+    start[s.motions[0].robot] = step.start;
+    end[s.motions[0].robot] = step.start + s.duration;
+  }
+  for (int r = 0; r < 2; ++r) {
+    const Move* home = history.final_moves[static_cast<std::size_t>(r)];
+    done[r] = history.final_starts[static_cast<std::size_t>(r)] + (home != nullptr ? home->duration : 0);
+  }
+  REQUIRE(start.size() == 2);
+  REQUIRE(std::max(start[0], start[1]) < std::min(end[0], end[1]));  // the picks overlap in time
+  const Millis r0_first = std::max(done[0], done[1] + end[0] - start[1]);
+  const Millis r1_first = std::max(done[0] + end[1] - start[0], done[1]);
+  REQUIRE(r0_first != r1_first);
+  CHECK(schedule.makespan == std::min(r0_first, r1_first));
+  std::map<int, Millis> scheduled;  // robot -> its pick's start in the schedule
+  for (std::size_t i = 0; i < schedule.segments.size(); ++i) {
+    const ScheduleSegment& seg = schedule.segments[i];
+    if (seg.motion == nullptr) continue;
+    const TransitionSample& s = instance.graph->transition(history.steps.at(static_cast<std::size_t>(seg.step)).transition).sample;
+    if (s.kind == TransitionKind::kPick) scheduled[seg.robot] = schedule.start[i];
+  }
+  const int first = r0_first < r1_first ? 0 : 1, second = 1 - first;
+  CHECK(scheduled[first] == start[first]);
+  CHECK(scheduled[second] == end[first]);
+  // and judged apart from the planner, on the written plan
+  requireNoCollision(writePlan(*instance.graph, history, schedule), instance.world);
 }
