@@ -4,25 +4,28 @@
 # more than 5 s on one input, a leak or an undocumented exception fails the run; the input
 # that did it is kept as BUILD/fuzz-findings/HARNESS/crash-... (or timeout-, leak-, oom-).
 #
-#   tools/setup.sh --fuzz && tests/fuzz/run.sh [SECONDS] [--record FILE]
+#   tools/setup.sh --fuzz && tests/fuzz/run.sh [SECONDS] [--only H1,H2] [--record FILE]
 #
-# --record FILE replaces the part of FILE between "<!-- fuzz:begin -->" and "<!-- fuzz:end -->"
-# with a table of the coverage reached, the date, the version and the machine.
+# --only runs just the named harnesses (long runs can be spread over several sittings).
+# --record FILE updates the table between "<!-- fuzz:begin -->" and "<!-- fuzz:end -->" in FILE:
+# the rows of the harnesses run are replaced with the coverage reached and today's date, the
+# others kept; the line below it names the latest run's version and machine.
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)
 seconds=60
 record=""
+harnesses=(fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_foreign fuzz_numbers)
 while (($# > 0)); do
   case "$1" in
     --record) record=$2; shift 2 ;;
+    --only) IFS=, read -r -a harnesses <<<"$2"; shift 2 ;;
     *) seconds=$1; shift ;;
   esac
 done
 build="$root/build-fuzz"
 here="$root/tests/fuzz"
-table="| harness | reads | seconds | inputs run | coverage (edges) | features | corpus |
-|---|---|---:|---:|---:|---:|---:|"
+rows=""
 declare -A reads=(
   [fuzz_world]="world YAML" [fuzz_plan]="plan JSON, checked against the default world"
   [fuzz_report]="report JSON (and its JUnit XML)" [fuzz_outcomes]="stress outcome JSON"
@@ -42,7 +45,8 @@ declare -A seeds=(
 )
 
 failed=()
-for harness in fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_foreign fuzz_numbers; do
+for harness in "${harnesses[@]}"; do
+  [[ -n "${seeds[$harness]:-}" ]] || { echo "fuzz: no harness $harness" >&2; exit 2; }
   binary="$build/tests/fuzz/$harness"
   [[ -x "$binary" ]] || { echo "fuzz: $binary is missing (run tools/setup.sh --fuzz)" >&2; exit 1; }
   corpus="$build/fuzz-corpus/$harness"
@@ -61,7 +65,7 @@ for harness in fuzz_world fuzz_plan fuzz_report fuzz_outcomes fuzz_script fuzz_f
     runs=$(grep -o 'stat::number_of_executed_units: [0-9]*' "$log" | grep -o '[0-9]*$')
     size=$(ls "$corpus" | wc -l)
     echo "fuzz: $harness: $runs inputs in $seconds s, coverage $cov edges, $ft features, corpus $size"
-    table+=$'\n'"| \`$harness\` | ${reads[$harness]} | $seconds | $runs | $cov | $ft | $size |"
+    rows+="| \`$harness\` | ${reads[$harness]} | $seconds | $runs | $cov | $ft | $size | $(date -u +%Y-%m-%d) |"$'\n'
   else
     echo "fuzz: $harness FAILED; the input: $(ls -t "$findings" | head -1); log: $log" >&2
     tail -40 "$log" >&2
@@ -73,16 +77,21 @@ done
 if [[ -n "$record" ]]; then
   version=$(grep -oP 'project\(dashbed VERSION \K[0-9.]+' "$root/CMakeLists.txt")
   machine="$(lscpu | sed -n 's/^Model name: *//p'), $(nproc) cores"
-  section="$table
-
-Recorded by \`tests/fuzz/run.sh $seconds --record\` on $(date -u +%Y-%m-%d), dashbed $version, $machine, $(clang++ --version | head -1)."
-  python3 - "$record" "$section" <<'PY'
+  footer="Each row is its harness's latest long run (\`tests/fuzz/run.sh SECONDS --only HARNESS --record\`). Latest: dashbed $version, $machine, $(clang++ --version | head -1)."
+  python3 - "$record" "$rows" "$footer" <<'PY'
 import sys
-path, section = sys.argv[1], sys.argv[2]
+path, rows, footer = sys.argv[1], sys.argv[2], sys.argv[3]
+order = ["fuzz_world", "fuzz_plan", "fuzz_report", "fuzz_outcomes", "fuzz_script", "fuzz_foreign", "fuzz_numbers"]
 text = open(path).read()
 begin, end = "<!-- fuzz:begin -->", "<!-- fuzz:end -->"
 i, j = text.index(begin) + len(begin), text.index(end)
-open(path, "w").write(text[:i] + "\n" + section + "\n" + text[j:])
+def name(row):
+    return row.split("|")[1].strip().strip("`")
+kept = {name(r): r for r in text[i:j].splitlines() if r.startswith("| `")}
+kept.update({name(r): r for r in rows.splitlines() if r})
+header = "| harness | reads | seconds | inputs run | coverage (edges) | features | corpus | date |\n|---|---|---:|---:|---:|---:|---:|---|"
+table = "\n".join([header] + [kept[h] for h in order if h in kept])
+open(path, "w").write(text[:i] + "\n" + table + "\n\n" + footer + "\n" + text[j:])
 PY
   echo "fuzz: recorded in $record"
 fi
