@@ -35,6 +35,10 @@ constexpr int kAllBits = -1;
 // the GJK/EPA pair code a positive margin to work with.
 constexpr double kMargin = 0.001;
 
+// Turn rate below which an object counts as at rest for sleeping [rad/s]: a 4 cm cube's corners
+// then move at most 1 mm/s, a tenth of the default rest speed.
+constexpr double kSleepTurnRate = 0.05;
+
 // Ratio of the finger coupling in Bullet's gear convention (velocity_a + ratio * velocity_b = 0):
 // -1 makes the two finger joints move equally (tests/sim checks it).
 constexpr double kFingerGearRatio = -1.0;
@@ -214,7 +218,7 @@ struct Simulation::Impl {
   void configureSolver(const core::PhysicsSettings& physics);
   void addFloor(double friction);
   void addFixtures(const std::vector<core::FixtureSpec>& fixtures, double friction);
-  void addObjects(const std::vector<core::ObjectSpec>& specs);
+  void addObjects(const std::vector<core::ObjectSpec>& specs, double rest_speed);
   void addRobot(int r, const core::PlacedRobot& placed, double pad_friction, double time_step);
   void addMultiBody(Robot& robot, const core::PlacedRobot& placed);
   void addColliders(Robot& robot, int r, const core::RobotModel& model, double pad_friction);
@@ -274,8 +278,11 @@ void Simulation::Impl::addFixtures(const std::vector<core::FixtureSpec>& fixture
   }
 }
 
-/// Objects: dynamic boxes that never sleep.
-void Simulation::Impl::addObjects(const std::vector<core::ObjectSpec>& specs) {
+/// Objects: dynamic boxes. One that has stayed slower than the monitor's rest speed (and
+/// kSleepTurnRate) for Bullet's deactivation time, 2 s, sleeps: it is neither integrated nor
+/// paired with the table until the bounds of something awake overlap its own (Bullet's
+/// simulation islands), which wakes it before anything touches it.
+void Simulation::Impl::addObjects(const std::vector<core::ObjectSpec>& specs, double rest_speed) {
   for (std::size_t o = 0; o < specs.size(); ++o) {
     const core::ObjectSpec& spec = specs[o];
     btCollisionShape* box = own(boxShape(spec.size));
@@ -287,7 +294,7 @@ void Simulation::Impl::addObjects(const std::vector<core::ObjectSpec>& specs) {
     ci.m_friction = spec.friction;
     ci.m_restitution = 0.0;
     object.body = std::make_unique<btRigidBody>(ci);
-    object.body->setActivationState(DISABLE_DEACTIVATION);
+    object.body->setSleepingThresholds(rest_speed, kSleepTurnRate);
     // friction anchors keep a static-friction contact from creeping between steps
     object.body->setCollisionFlags(object.body->getCollisionFlags() | btCollisionObject::CF_HAS_FRICTION_ANCHOR);
     object.body->setUserIndex(addRef({BodyRef::Kind::kObject, static_cast<int>(o), -1}));
@@ -437,7 +444,7 @@ Simulation::Simulation(const core::World& world, const core::RobotSet& robots)
   s.configureSolver(world.physics);
   s.addFloor(world.physics.fixture_friction);
   s.addFixtures(world.fixtures, world.physics.fixture_friction);
-  s.addObjects(world.objects);
+  s.addObjects(world.objects, world.checks.rest_speed);
   for (std::size_t r = 0; r < robots.size(); ++r) {
     s.addRobot(static_cast<int>(r), robots[r], world.physics.pad_friction, time_step_);
     const core::RobotModel& model = *robots[r].model;
