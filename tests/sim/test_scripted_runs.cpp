@@ -244,10 +244,11 @@ TEST_CASE("a cube set aside on the table and picked up again passes, one set dow
 }
 
 TEST_CASE("an arm sweeping through a resting cube knocks it; 7 cm higher it passes", "[sim][scripted]") {
-  // cube_1 rests at about (-0.405, -0.121); r0 sweeps its open gripper across it 15 mm up
+  // cube_1 rests at about (-0.405, -0.121); after 3 s, when it sleeps (Simulation), r0 sweeps
+  // its open gripper across it 15 mm up: coming near wakes it
   const auto sweep = [](double z) {
-    return simulate("r0 moves to" + downAt(0, {-0.405, -0.221, z}) + "; r0 moves to" + downAt(0, {-0.405, -0.021, z}) +
-                    "; r0 moves home");
+    return simulate("r0 waits 3; r0 moves to" + downAt(0, {-0.405, -0.221, z}) + "; r0 moves to" +
+                    downAt(0, {-0.405, -0.021, z}) + "; r0 moves home");
   };
   const sim::Report low = sweep(0.785);
   REQUIRE(hasEvent(low, "knocked object"));

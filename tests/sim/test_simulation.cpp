@@ -81,6 +81,21 @@ TEST_CASE("a robot holds its home pose under gravity for 5 s", "[sim]") {
   CHECK(dut.tracking(0).saturated_steps == 0);
 }
 
+TEST_CASE("a cube at rest sleeps after 2 s, exactly still where it settled", "[sim]") {
+  core::World world = test::tableWorld(false);
+  test::addCube(world, "cube", 0.6, 0.5);
+  const core::RobotSet robots(world);
+  sim::Simulation sim(world, robots);
+  const core::Plan hold;  // no trajectory: hold home
+  sim::PlanExecutor dut(sim, hold);
+  while (sim.time() < 1.0) dut.step();
+  const core::Pose settled = sim.objectPose(0);
+  while (sim.time() < 3.5) dut.step();
+  CHECK(sim.objectLinearVelocity(0) == Eigen::Vector3d::Zero());
+  CHECK((sim.objectPose(0).translation() - settled.translation()).norm() < 1e-6);
+  CHECK(std::abs(sim.objectPose(0).translation().z() - 0.77) < 1e-3);
+}
+
 TEST_CASE("tracking a trajectory at the UR5e's maximum joint speed", "[sim]") {
   // every arm joint at once follows q0 + A (1 - cos(w t)) with A w = pi rad/s, the UR5e's
   // joint speed limit (UR's ROS 2 description, joint_limits.yaml), and peak acceleration
