@@ -8,7 +8,9 @@
 #include "core/world_loader.h"
 #include "sim/monitor.h"
 #include "sim/plan_executor.h"
+#include "sim/run_plan.h"
 #include "sim/simulation.h"
+#include "tools/planning/run_planner.h"
 #include "tools/scenarios/scenarios.h"
 
 namespace dashbed::tools {
@@ -35,20 +37,14 @@ core::Plan swayPlan(const core::World& world, double seconds) {
   return plan;
 }
 
-std::vector<std::string> benchOne(const std::string& label, const core::World& world, double seconds) {
-  const core::LoadedWorld loaded = core::validateWorld(world);
-  const core::Plan plan = swayPlan(*loaded.world, seconds);
-  sim::Simulation sim(*loaded.world, *loaded.robots);
-  sim::PlanExecutor executor(sim, plan);
-  sim::Monitor monitor(sim, plan, 0.0);
+/// The row of `world` from `simulate`, which returns the simulated seconds; timed by wall clock
+/// and (on a shared machine the wall clock also counts waiting for a core) by CPU time.
+template <class Simulate>
+std::vector<std::string> timedRow(const std::string& label, const core::World& world, Simulate&& simulate) {
   const auto start = std::chrono::steady_clock::now();
   const std::clock_t cpu_start = std::clock();
-  while (sim.time() < seconds) {
-    executor.step();
-    monitor.observe(executor);
-  }
+  const double seconds = simulate();
   const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  // CPU time too: on a shared machine the wall clock also counts waiting for a core
   const double cpu = static_cast<double>(std::clock() - cpu_start) / CLOCKS_PER_SEC;
   return {label,
           std::to_string(world.robots.size()),
@@ -57,7 +53,31 @@ std::vector<std::string> benchOne(const std::string& label, const core::World& w
           fixed(wall, 1),
           fixed(seconds / wall, 1) + "x",
           fixed(seconds / cpu, 1) + "x",
-          fixed(cpu / (seconds / sim.timeStep()) * 1e6, 1)};
+          fixed(cpu / (seconds / world.physics.time_step) * 1e6, 1)};
+}
+
+std::vector<std::string> benchOne(const std::string& label, const core::World& world, double seconds) {
+  const core::LoadedWorld loaded = core::validateWorld(world);
+  const core::Plan plan = swayPlan(*loaded.world, seconds);
+  return timedRow(label, *loaded.world, [&] {
+    sim::Simulation sim(*loaded.world, *loaded.robots);
+    sim::PlanExecutor executor(sim, plan);
+    sim::Monitor monitor(sim, plan, 0.0);
+    while (sim.time() < seconds) {
+      executor.step();
+      monitor.observe(executor);
+    }
+    return sim.time();
+  });
+}
+
+/// The execution of the world's Greedy plan (seed 1), as `dashbed sim` runs it.
+std::vector<std::string> benchPlan(const std::string& file) {
+  const core::LoadedWorld loaded = core::loadWorld(file);
+  const core::Plan plan = planForRun(loaded, PlannerChoice{});
+  return timedRow("plan of " + loaded.world->name, *loaded.world, [&] {
+    return sim::runPlan(*loaded.world, *loaded.robots, plan, "plan.json").simulated_time;
+  });
 }
 
 }  // namespace
@@ -65,23 +85,25 @@ std::vector<std::string> benchOne(const std::string& label, const core::World& w
 BenchTable benchSimulation(const SimBenchOptions& options) {
   BenchTable table;
   table.note = "Headless simulation, one thread, monitor on, 1 kHz unless the world says otherwise; every robot "
-               "sways around home.";
+               "sways around home, except in the rows \"plan of\": the world's Greedy plan (seed 1) executed as "
+               "`dashbed sim` does (settling, plan, tail; monitor, readiness check).";
   table.header = {"world", "robots", "objects", "sim [s]", "wall [s]", "RTF wall", "RTF cpu", "cpu us/step"};
   if (!options.worlds.empty()) {
     for (const std::string& file : options.worlds) {
       table.rows.push_back(benchOne(file, core::loadWorldFile(file), options.seconds));
     }
-    return table;
+  } else {
+    for (const int cubes : options.cubes) {
+      SortingParams params;
+      params.robots = 2;
+      params.cubes = cubes;
+      params.start = StartLayout::kRandom;
+      core::World world = generateSorting(params);
+      core::deriveFixtureGeometry(world);  // the bins' walls and floors, as the loader makes them
+      table.rows.push_back(benchOne(world.name, world, options.seconds));
+    }
   }
-  for (const int cubes : options.cubes) {
-    SortingParams params;
-    params.robots = 2;
-    params.cubes = cubes;
-    params.start = StartLayout::kRandom;
-    core::World world = generateSorting(params);
-    core::deriveFixtureGeometry(world);  // the bins' walls and floors, as the loader makes them
-    table.rows.push_back(benchOne(world.name, world, options.seconds));
-  }
+  for (const std::string& file : options.plan_worlds) table.rows.push_back(benchPlan(file));
   return table;
 }
 

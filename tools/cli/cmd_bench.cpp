@@ -76,6 +76,10 @@ void addBenchCommand(CLI::App& app) {
   sim->add_option("--world", options->worlds, "benchmark these world files instead");
   sim->add_option("--cubes", options->cubes, "cube counts of the generated 2-robot sorting worlds")->capture_default_str();
   sim->add_option("--seconds", options->seconds, "simulated seconds per world")->capture_default_str();
+  options->plan_worlds = {core::defaultWorldPath().string()};
+  sim->add_option("--plan-world", options->plan_worlds,
+                  "also time the execution of these worlds' Greedy plans, as `dashbed sim` runs them (default: "
+                  "worlds/default.yaml)");
   add_record(sim);
   sim->callback([options, record, sim] {
     runGuarded("bench sim", [&] {
