@@ -243,6 +243,21 @@ TEST_CASE("a cube set aside on the table and picked up again passes, one set dow
   CHECK(on_cube.verdict == sim::Verdict::kFailed);
 }
 
+namespace {
+
+/// The run `low` knocks `object` (and fails on it); the same run higher, `high`, is clean.
+void checkKnockedThenClear(const sim::Report& low, const sim::Report& high, const std::string& object) {
+  REQUIRE(hasEvent(low, "knocked object"));
+  CHECK_THAT(event(low, "knocked object")->detail, Catch::Matchers::StartsWith(object + " moved"));
+  CHECK_THAT(low.execution_failure, Catch::Matchers::Contains(object));
+  CHECK_FALSE(low.passed());
+  INFO(high.execution_failure);
+  CHECK(high.events.empty());
+  CHECK(high.passed());
+}
+
+}  // namespace
+
 TEST_CASE("an arm sweeping through a resting cube knocks it; 7 cm higher it passes", "[sim][scripted]") {
   // cube_1 rests at about (-0.405, -0.121); after 3 s, when it sleeps (Simulation), r0 sweeps
   // its open gripper across it 15 mm up: coming near wakes it
@@ -250,14 +265,7 @@ TEST_CASE("an arm sweeping through a resting cube knocks it; 7 cm higher it pass
     return simulate("r0 waits 3; r0 moves to" + downAt(0, {-0.405, -0.221, z}) + "; r0 moves to" +
                     downAt(0, {-0.405, -0.021, z}) + "; r0 moves home");
   };
-  const sim::Report low = sweep(0.785);
-  REQUIRE(hasEvent(low, "knocked object"));
-  CHECK_THAT(low.execution_failure, Catch::Matchers::Contains("cube_1"));
-  CHECK_FALSE(low.passed());
-  const sim::Report high = sweep(0.86);
-  INFO(high.execution_failure);
-  CHECK(high.events.empty());
-  CHECK(high.passed());
+  checkKnockedThenClear(sweep(0.785), sweep(0.86), "cube_1");
 }
 
 TEST_CASE("a carried cube swept through a resting one knocks it; 5 cm higher it passes", "[sim][scripted]") {
@@ -267,14 +275,7 @@ TEST_CASE("a carried cube swept through a resting one knocks it; 5 cm higher it 
     return simulate("r1 picks cube_0; r1 moves to" + downAt(1, {0.406, 0.10, z}) + "; r1 moves to" +
                     downAt(1, {0.406, 0.36, z}) + "; r1 places cube_0 at 0.41 -0.125 0.77");
   };
-  const sim::Report low = carry(0.80);
-  REQUIRE(hasEvent(low, "knocked object"));
-  CHECK_THAT(event(low, "knocked object")->detail, Catch::Matchers::StartsWith("cube_2 moved"));
-  CHECK_FALSE(low.passed());
-  const sim::Report high = carry(0.85);
-  INFO(high.execution_failure);
-  CHECK(high.events.empty());
-  CHECK(high.passed());
+  checkKnockedThenClear(carry(0.80), carry(0.85), "cube_2");
 }
 
 TEST_CASE("two runs of the same plan give byte-identical reports", "[sim][scripted]") {
