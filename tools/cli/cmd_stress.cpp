@@ -115,12 +115,13 @@ void runCampaign(const StressOptions& options, const ProcessGroup& group) {
     shares += (shares.empty() ? "" : " + ") + std::to_string(rank_outcomes.size());
     for (TrialOutcome& o : rank_outcomes) outcomes.push_back(std::move(o));
   }
-  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   const CampaignResults results = summarizeCampaign(std::move(info), std::move(outcomes), options.worst);
   writeCampaignFiles(options.out_dir, results.info, *loaded.world, results.points, results.outcomes, results.worst);
   saveTrials(options.out_dir, runner, results.worst, threads, /*replays=*/!options.html.empty());
   if (!options.html.empty()) writeCampaignPage(options.html, options.out_dir, results.info, results.points, results.worst);
+  // the whole command: the nominal plan, the trials, the worst trials' files and the page
+  const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
 
   std::cout << summaryText(results.info, results.points);
   printWorst(results.worst, options.out_dir);
